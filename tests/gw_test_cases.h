@@ -3,7 +3,11 @@
  * case a child (test_child.h) that builds a small input from the library's
  * defaults, makes one call and expects either its refusal naming a field or,
  * for a control, GW_OK; a scratch directory under /tmp for the files the
- * cases write; the same three discs in a box 1 m wide as a layer. */
+ * cases write; the same three discs in a box 1 m wide as a layer; the bytes
+ * the process has read. And what other child-case tests wrote twice: an
+ * unsettled layer-make result (test_library_hostile46b, test_library_left46);
+ * a contact stiffness refused naming it with its range, a column's run status
+ * and its F_max (test_library_hostile50, test_stiffness_named). */
 #ifndef GW_TEST_CASES_H
 #define GW_TEST_CASES_H
 
@@ -102,6 +106,92 @@ static inline int test_config_read(const char *text, gw_err *e)
     const int rc = gw_sweep_config_read_string(text, "cfg", models, nm, &cfg, &m, e);
     gw_sweep_config_free(&cfg);
     return rc;
+}
+
+/* bytes this process has read so far (/proc/self/io rchar; -1: unknown) */
+static inline long long test_bytes_read(void)
+{
+    FILE *f = fopen("/proc/self/io", "r");
+    long long v = -1;
+    char line[128];
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "rchar: %lld", &v) == 1)
+            break;
+    if (f)
+        fclose(f);
+    return v;
+}
+
+/* an unsettled result as layer-make fills one: E_k 10 J above a threshold of
+ * 1 J, the floor carrying the pile, judged from 0.5 s */
+static inline gw_layer_make_result test_unsettled_make_result(void)
+{
+    gw_layer_make_result r;
+    memset(&r, 0, sizeof r);
+    r.converged = 0, r.t_settle = 1, r.ke_final = 10, r.floor_load = 1, r.ke_limit = 1, r.t_judge = 0.5;
+    r.porosity = 0.2;
+    return r;
+}
+
+/* gw_chain_run_check of p under o refused naming WHO ("k" or "kwall") first,
+ * "WHO: ... N/m^1.5 is outside [LO, HI]" with 0 < LO < HI: 1 and HI in *hi;
+ * else 0 with the message on stdout (which fails the case) */
+static inline int test_stiffness_refused(const gw_chain_params *p, const gw_chain_run_opts *o, const char *who,
+                                         double *hi)
+{
+    gw_err e = {0};
+    const int rc = gw_chain_run_check(p, o, &e);
+    char pre[16];
+    snprintf(pre, sizeof pre, "%s: ", who);
+    double lo = 0;
+    if (!refused(rc, &e, pre) || strncmp(e.msg, pre, strlen(pre)) != 0 || !strstr(e.msg, "N/m^1.5 is outside [") ||
+        sscanf(strstr(e.msg, "outside [") + 9, "%lg, %lg]", &lo, hi) != 2 || !(lo > 0 && lo < *hi)) {
+        printf("%s: '%s'\n", who, e.msg);
+        return 0;
+    }
+    return 1;
+}
+
+/* the status of gw_chain_collide of the column p under o, its message (its
+ * own, cleared before) in *e, the column made and the result freed; a column that cannot be made is
+ * said on stdout ("create: MESSAGE", which fails the case) and its status
+ * returned */
+static inline int test_chain_run_status(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *e)
+{
+    gw_chain *c = NULL;
+    int rc = gw_chain_create(p, &c, e);
+    if (rc != GW_OK) {
+        printf("create: %s\n", e->msg);
+        return rc;
+    }
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    e->msg[0] = '\0'; /* the message is the run's */
+    rc = gw_chain_collide(c, o, &r, e);
+    gw_chain_result_free(&r);
+    gw_chain_free(c);
+    return rc;
+}
+
+/* F_max of the column p under o, or -1 with the failure on stdout (which
+ * fails the case) */
+static inline double test_chain_fmax(const gw_chain_params *p, const gw_chain_run_opts *o)
+{
+    gw_chain *c = NULL;
+    gw_err e = {0};
+    double f = -1;
+    if (gw_chain_create(p, &c, &e) == GW_OK) {
+        gw_chain_result r;
+        memset(&r, 0, sizeof r);
+        if (gw_chain_collide(c, o, &r, &e) == GW_OK)
+            f = r.f_max;
+        else
+            printf("run: %s\n", e.msg);
+        gw_chain_result_free(&r);
+    } else
+        printf("create: %s\n", e.msg);
+    gw_chain_free(c);
+    return f;
 }
 
 #endif

@@ -162,19 +162,7 @@ sed 's/^gravity = 0:999/gravity = 0:19/' "$tmp/e9.ini" >"$tmp/e7.ini"
 
 # --- 6: layer-stats on a sweep table without its comment lines
 if "$GW" layer-make --n 40 --width-rm 14 --seed 2 --out "$tmp/S.txt" >/dev/null 2>&1; then
-    cat >"$tmp/l.ini" <<CFG
-[sweep]
-model = layer
-[grid]
-rb-rm = 0.8, 1.5
-point = 0:2
-[params]
-sample = $tmp/S.txt
-points = 3
-x = 0.1
-spacing = 0.07
-t-max = 0.003
-CFG
+    layer_grid_ini "$tmp/l.ini" "$tmp/S.txt" 0.003 # (test_lib.sh)
     "$GW" sweep "$tmp/l.ini" --out "$tmp/l" --quiet --jobs 1 || ko "6: layer sweep"
     "$GW" layer-stats "$tmp/l/results.csv" --out "$tmp/s1" >/dev/null 2>&1 || ko "6: layer-stats on the table"
     grep -v '^#' "$tmp/l/results.csv" >"$tmp/plain.csv"

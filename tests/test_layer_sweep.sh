@@ -29,20 +29,7 @@ PY=/usr/bin/python3
 
 # full = true: every case runs to t-max (about 0.3 s each), long enough to be
 # killed mid-sweep; x and spacing are not round numbers so the formula is tested.
-cat >"$tmp/s.ini" <<CFG
-[sweep]
-model = layer
-[grid]
-rb-rm = 0.8, 1.5
-point = 0:2
-[params]
-sample = $tmp/S.txt
-points = 3
-x = 0.1
-spacing = 0.07
-t-max = 0.012
-full = true
-CFG
+layer_grid_ini "$tmp/s.ini" "$tmp/S.txt" 0.012 "full = true" # (test_lib.sh)
 "$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2; rc=$?
 [ $rc -eq 0 ] && ok "layer sweep exits 0" || ko "layer sweep exit $rc"
 

@@ -44,6 +44,20 @@
 # A sweep stopped mid-way by a disturbance of its journal (at_row):
 #   sweep_stopped WHAT RC ERR LINES PATTERN: exit 1, LINES lines, PATTERN;
 #   kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal kept aside, counted.
+# A sweep made from its sections' lines and run quietly, one case at a time
+# (test_sweep_warnings_table, test_no_effect_drag_sweep), in the current
+# directory:
+#   sweep_config NAME MODEL GRID PARAMS: NAME.ini of MODEL, GRID and PARAMS its
+#   [grid] and [params] lines ("key = values", ';' between);
+#   sweep_quiet NAME [FLAGS]: NAME.ini swept into NAME.out (--jobs 1 --quiet,
+#   120 s of CPU), stderr in NAME.err; sets rc;
+#   sweep_dashpot_config NAME [DAMPING]: NAME.ini of the chain sweep whose sensor
+#   dashpot has no effect in 2 of 4 cases: n = 1, 3 by sensor-damping =
+#   DAMPING (1e-12), 10 on a 1e-2 kg, 1e7 N/m sensor body at 0.3 m/s.
+# A layer sweep of 2 x 3 cases (test_layer_sweep, test_hostile_sweeps):
+#   layer_grid_ini FILE SAMPLE TMAX [LINE]: FILE of the layer model, rb-rm =
+#   0.8, 1.5 by point = 0:2 (3 points at x = 0.1 m, 0.07 m apart) on SAMPLE to
+#   t-max TMAX, and LINE last in [params] when given.
 # A command's --json read back (test_wave_speed_dt_out, test_hostile_fortyeighth):
 #   json_fields FILE FMT KEY...: the top-level KEYs of FILE's JSON object on one
 #   line, blank-separated, each as Python's FMT % value ("%.0f", "%r"), "null"
@@ -303,6 +317,28 @@ journal_held_edit() {
     for _ in $(seq 1200); do [ -e "$1.done" ] && return 0; sleep 0.05; done
     return 1
 }
+sweep_config() {
+    { echo "[sweep]"; echo "model = $2"; echo "[grid]"; tr ';' '\n' <<<"$3"
+      echo "[params]"; tr ';' '\n' <<<"$4"; } >"$1.ini"
+}
+
+sweep_dashpot_config() {
+    sweep_config "$1" chain "n = 1, 3;sensor-damping = ${2:-1e-12}, 10" \
+        "sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
+}
+
+layer_grid_ini() {
+    { printf '[sweep]\nmodel = layer\n[grid]\nrb-rm = 0.8, 1.5\npoint = 0:2\n[params]\nsample = %s\n' "$2"
+      printf 'points = 3\nx = 0.1\nspacing = 0.07\nt-max = %s\n' "$3"
+      [ -z "${4:-}" ] || echo "$4"; } >"$1"
+}
+
+sweep_quiet() {
+    local name=$1
+    shift
+    cpu_run 120 "$GW" sweep "$name.ini" --out "$name.out" --jobs 1 --quiet "$@" >/dev/null 2>"$name.err"; rc=$?
+}
+
 journal_add_line() { echo "# a note" >>"$1/journal.csv"; cp "$1/journal.csv" "$1.left"; }
 journal_cut() { : >"$1/journal.csv"; : >"$1.left"; }
 

@@ -33,18 +33,8 @@
 #include <string.h>
 
 #include "granwave.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
-
-/* an unsettled result as layer-make fills one: E_k 10 J above a threshold of
- * 1 J, the floor carrying the pile, judged from 0.5 s */
-static gw_layer_make_result unsettled(void)
-{
-    gw_layer_make_result r;
-    memset(&r, 0, sizeof r);
-    r.converged = 0, r.t_settle = 1, r.ke_final = 10, r.floor_load = 1, r.ke_limit = 1, r.t_judge = 0.5;
-    r.porosity = 0.2;
-    return r;
-}
 
 /* the result's warnings refused: GW_EINVAL, nothing added */
 static int warnings_refused(const gw_layer_make_result *r)
@@ -61,7 +51,7 @@ static int warnings_refused(const gw_layer_make_result *r)
 
 static int c_conv_neg3(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.converged = -3;
     r.untrimmed_top_rm = 5; /* its warning is not added either */
     EXPECT(warnings_refused(&r));
@@ -70,7 +60,7 @@ static int c_conv_neg3(void)
 
 static int c_conv_2(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.converged = 2;
     EXPECT(warnings_refused(&r));
     return 0;
@@ -78,7 +68,7 @@ static int c_conv_2(void)
 
 static int c_ke_nan(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.ke_final = NAN;
     EXPECT(warnings_refused(&r));
     r.ke_final = -1;
@@ -88,7 +78,7 @@ static int c_ke_nan(void)
 
 static int c_load_nan(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.floor_load = NAN;
     EXPECT(warnings_refused(&r));
     r.floor_load = -1;
@@ -98,12 +88,12 @@ static int c_load_nan(void)
 
 static int c_limit_judge_bad(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.ke_limit = NAN;
     EXPECT(warnings_refused(&r));
     r.ke_limit = -1;
     EXPECT(warnings_refused(&r));
-    r = unsettled();
+    r = test_unsettled_make_result();
     r.t_judge = NAN;
     EXPECT(warnings_refused(&r));
     r.t_judge = INFINITY;
@@ -115,7 +105,7 @@ static int c_limit_judge_bad(void)
  * known 1 J and the floor carries the pile: the verdict alone, said as such */
 static int c_verdict_alone(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     r.ke_final = 0;
     char *list = NULL;
     EXPECT(gw_layer_make_result_warnings(&r, 2.0, "o.txt", &list) == GW_OK && list);
@@ -139,7 +129,7 @@ static int c_verdict_alone(void)
 /* controls: E_k above the threshold, the floor low, settled, no t_max */
 static int c_controls(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     char *list = NULL;
     EXPECT(gw_layer_make_result_warnings(&r, 2.0, "o.txt", &list) == GW_OK && list &&
            strstr(list, "E_k = 10 J still above --ke-threshold at t-max = 2 s (1 J; raise --t-max)"));
@@ -150,10 +140,10 @@ static int c_controls(void)
            strstr(list, "its floor carries 0.2 of the pile's weight") && !strstr(list, "still above"));
     free(list);
     list = NULL;
-    r = unsettled();
+    r = test_unsettled_make_result();
     r.converged = 1, r.ke_final = NAN; /* a settled result states none of its numbers */
     EXPECT(gw_layer_make_result_warnings(&r, NAN, NULL, &list) == GW_OK && !list);
-    r = unsettled();
+    r = test_unsettled_make_result();
     r.ke_limit = 0; /* unknown (a result from before ke_limit): E_k named, as before */
     EXPECT(gw_layer_make_result_warnings(&r, 2.0, NULL, &list) == GW_OK && list &&
            strstr(list, "E_k = 10 J still above --ke-threshold at t-max = 2 s (raise --t-max)"));

@@ -57,7 +57,9 @@
  *   - gw_solver_params.use_jac took any int as 1 (-1, 2, INT_MIN ran with
  *     GW_OK): gw_chain_run_check and the solver's create refuse it naming
  *     use_jac (the forty-third session, after the pass); 0 and 1 agree.
- * Each case runs in its own child process (test_child.h).
+ * Each case runs in its own child process (test_child.h); the refusal
+ * naming k, the run's status and F_max are gw_test_cases.h's (shared with
+ * test_stiffness_named).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <float.h>
@@ -67,6 +69,7 @@
 #include <string.h>
 
 #include "granwave.h"
+#include "gw_test_cases.h"
 #include "layer_test_util.h"
 #include "test_child.h"
 
@@ -111,21 +114,7 @@ static double column_fmax(double m, gw_chain_run_opts o)
     p.n = 3;
     if (m > 0)
         p.mass = m;
-    gw_chain *c = NULL;
-    gw_err e = {0};
-    double f = -1;
-    if (gw_chain_create(&p, &c, &e) == GW_OK) {
-        gw_chain_result r;
-        memset(&r, 0, sizeof r);
-        if (gw_chain_collide(c, &o, &r, &e) == GW_OK)
-            f = r.f_max;
-        else
-            printf("m %g: %s\n", m, e.msg);
-        gw_chain_result_free(&r);
-    } else
-        printf("m %g: %s\n", m, e.msg);
-    gw_chain_free(c);
-    return f;
+    return test_chain_fmax(&p, &o);
 }
 
 /* control: a mass of 1.8e308 kg runs (the column is scale-free), F ~ m^(3/5) */
@@ -147,19 +136,6 @@ static int c_heavy_control(void)
  * scale-free); a step given is still the step's refusal; a wall of kwall
  * 1.8e308, whose contact is the shortest, is not put on k (it was told to
  * take k above 3.9e290 before k's cause was checked). */
-static int k_named(const gw_chain_params *p, const gw_chain_run_opts *o, double *hi)
-{
-    gw_err e = {0};
-    const int rc = gw_chain_run_check(p, o, &e);
-    double lo = 0;
-    if (!refused(rc, &e, "k: ") || strncmp(e.msg, "k: ", 3) != 0 || !strstr(e.msg, "N/m^1.5 is outside [") ||
-        sscanf(strstr(e.msg, "outside [") + 9, "%lg, %lg]", &lo, hi) != 2 || !(lo > 0 && lo < *hi)) {
-        printf("k %g: '%s'\n", p->k, e.msg);
-        return 0;
-    }
-    return 1;
-}
-
 static int c_k_huge_named(void)
 {
     gw_chain_params p = gw_chain_params_default();
@@ -167,27 +143,21 @@ static int c_k_huge_named(void)
     p.k = DBL_MAX;
     gw_chain_run_opts o = gw_chain_run_opts_default();
     double hi = 0;
-    EXPECT(k_named(&p, &o, &hi) && hi < 1e40 && hi > p.kwall);
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi) && hi < 1e40 && hi > p.kwall);
     /* the run itself refuses it the same way (the chain's own kc, each k) */
-    gw_chain *c = NULL;
     gw_err e = {0};
-    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    const int rc = gw_chain_collide(c, &o, &r, &e);
-    gw_chain_result_free(&r);
-    gw_chain_free(c);
+    const int rc = test_chain_run_status(&p, &o, &e);
     EXPECT(refused(rc, &e, "k: 1.79769e+308 N/m^1.5 is outside ["));
     /* the range's top end runs the check, 10 % above it is refused naming k */
     p.k = hi;
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
     p.k = 1.1 * hi;
     double hi2 = 0;
-    EXPECT(k_named(&p, &o, &hi2) && hi2 == hi);
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi2) && hi2 == hi);
     /* rk4's own step as well */
     p.k = DBL_MAX;
     o.solver = gw_solver_rk4;
-    EXPECT(k_named(&p, &o, &hi2));
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi2));
     /* controls: k and kwall both 1e200 pass; a dt_max given is its own refusal */
     o = gw_chain_run_opts_default();
     p.k = p.kwall = 1e200;
@@ -229,15 +199,9 @@ static int c_opts_subnormal(void)
         EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "gw_chain_run_opts.sp.atol"));
     }
     /* the run itself refuses it too (it failed with "blew up" under cvode) */
-    gw_chain *c = NULL;
-    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
     gw_chain_run_opts o = gw_chain_run_opts_default();
     o.t_max = 1e-310;
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    const int rc = gw_chain_collide(c, &o, &r, &e);
-    gw_chain_result_free(&r);
-    gw_chain_free(c);
+    const int rc = test_chain_run_status(&p, &o, &e);
     EXPECT(refused(rc, &e, "gw_chain_run_opts.t_max"));
     /* control: a normal t_max however small passes the check */
     o.t_max = 1e-200;
@@ -272,14 +236,8 @@ static int c_use_jac(void)
         o.sp.use_jac = bad[i];
         gw_err e = {0};
         EXPECT(gw_chain_run_check(&p, &o, &e) == GW_EINVAL && strstr(e.msg, "use_jac"));
-        gw_chain *c = NULL; /* the run refuses it too */
-        EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
-        gw_chain_result r;
-        memset(&r, 0, sizeof r);
-        e.msg[0] = '\0';
-        EXPECT(gw_chain_collide(c, &o, &r, &e) == GW_EINVAL && strstr(e.msg, "use_jac"));
-        gw_chain_result_free(&r);
-        gw_chain_free(c);
+        /* the run refuses it too */
+        EXPECT(test_chain_run_status(&p, &o, &e) == GW_EINVAL && strstr(e.msg, "use_jac"));
     }
     gw_chain_run_opts o = gw_chain_run_opts_default();
     o.solver = gw_solver_cvode;

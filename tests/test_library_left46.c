@@ -65,17 +65,6 @@ static char dir[64];
 
 /* ---- 1 gw_layer_make_result_check ---- */
 
-/* an unsettled result as layer-make fills one: E_k 10 J above a threshold of
- * 1 J, the floor carrying the pile, judged from 0.5 s */
-static gw_layer_make_result unsettled(void)
-{
-    gw_layer_make_result r;
-    memset(&r, 0, sizeof r);
-    r.converged = 0, r.t_settle = 1, r.ke_final = 10, r.floor_load = 1, r.ke_limit = 1, r.t_judge = 0.5;
-    r.porosity = 0.2;
-    return r;
-}
-
 enum { R_CONV, R_TOP, R_KE, R_LOAD, R_LIMIT, R_JUDGE, R_FALL, R_TMAX, R_NULL };
 typedef struct res_row {
     const char *label;
@@ -115,7 +104,7 @@ static const res_row *rrow;
 
 static int c_result(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     double t_max = 2;
     double *f[7] = {NULL, &r.untrimmed_top_rm, &r.ke_final, &r.floor_load, &r.ke_limit, &r.t_judge, &r.fall_energy};
     if (rrow->field == R_CONV)
@@ -148,7 +137,7 @@ static int c_result(void)
  * verdict), the check's err left empty */
 static int c_result_real(void)
 {
-    gw_layer_make_result r = unsettled();
+    gw_layer_make_result r = test_unsettled_make_result();
     gw_err e = {{0}};
     r.converged = 1, r.ke_final = NAN, r.floor_load = NAN;
     EXPECT(gw_layer_make_result_check(&r, NAN, &e) == GW_OK && !e.msg[0]);
@@ -368,20 +357,6 @@ static int c_text_controls(void)
 
 /* ---- 4 HDF5 samples: their superblock before their bytes are hashed ---- */
 
-/* bytes this process has read so far (/proc/self/io rchar; -1: unknown) */
-static long long bytes_read(void)
-{
-    FILE *f = fopen("/proc/self/io", "r");
-    long long v = -1;
-    char line[128];
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "rchar: %lld", &v) == 1)
-            break;
-    if (f)
-        fclose(f);
-    return v;
-}
-
 static int append_zeros(const char *path, long n, int sparse)
 {
     if (sparse) {
@@ -515,9 +490,9 @@ static int c_h5_read(void)
     EXPECT(h5_file(path));
     gw_layer_sample s;
     gw_err e = {{0}};
-    const long long r0 = bytes_read();
+    const long long r0 = test_bytes_read();
     const int rc = gw_layer_sample_read(path, &s, &e);
-    const long long got = bytes_read() - r0;
+    const long long got = test_bytes_read() - r0;
     if (!hrow->named) {
         if (rc != GW_OK)
             printf("read %s: %s\n", path, e.msg);
@@ -546,9 +521,9 @@ static int c_h5_sweep(void)
     const gw_sweep_model *layer[] = {&gw_layer_sweep_model}, *m = NULL;
     gw_sweep_config cfg;
     gw_err e = {{0}};
-    const long long r0 = bytes_read();
+    const long long r0 = test_bytes_read();
     const int rc = gw_sweep_config_read(ini, layer, 1, &cfg, &m, &e);
-    const long long got = bytes_read() - r0;
+    const long long got = test_bytes_read() - r0;
     if (rc == GW_OK)
         gw_sweep_config_free(&cfg);
     if (!hrow->named) {

@@ -74,20 +74,6 @@ static int gw_layer_rings_check(const gw_layer *L, double cx, double cy, double 
 
 static char dir[64];
 
-/* bytes this process has read so far (/proc/self/io rchar; -1: unknown) */
-static long long bytes_read(void)
-{
-    FILE *f = fopen("/proc/self/io", "r");
-    long long v = -1;
-    char line[128];
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "rchar: %lld", &v) == 1)
-            break;
-    if (f)
-        fclose(f);
-    return v;
-}
-
 static int write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
@@ -406,9 +392,9 @@ static int c_stream_dev_zero(void)
     FILE *f = fopen("/dev/zero", "rb");
     EXPECT(f != NULL);
     unsigned long long h = 7;
-    const long long r0 = bytes_read();
+    const long long r0 = test_bytes_read();
     const int rc = gw_fnv1a64_stream(f, &h);
-    const long long got = bytes_read() - r0;
+    const long long got = test_bytes_read() - r0;
     fclose(f);
     if (rc != GW_EINVAL || h != 7 || (r0 >= 0 && got >= (1LL << 20)))
         printf("status %d, h %llx, %lld bytes read\n", rc, h, got);
@@ -468,9 +454,9 @@ static int c_h5_root_zeros(void)
     EXPECT(fclose(f) == 0);
     gw_layer_sample s;
     gw_err e = {0};
-    const long long r0 = bytes_read();
+    const long long r0 = test_bytes_read();
     const int rc = gw_layer_sample_read(path, &s, &e);
-    const long long got = bytes_read() - r0;
+    const long long got = test_bytes_read() - r0;
     unlink(path);
     if (rc != GW_EFORMAT || !strstr(e.msg, "root group at byte 48") || (r0 >= 0 && got >= (1LL << 20)))
         printf("status %d, '%s', %lld bytes read\n", rc, e.msg, got);

@@ -26,18 +26,9 @@ test_setup "$@"
 cd "$tmp" || exit 1
 export LC_ALL=C
 
-# config NAME GRID PARAMS: NAME.ini of the chain model, GRID and PARAMS its
-# sections' lines ("key = values", separated by ';')
-config() {
-    { echo "[sweep]"; echo "model = chain"; echo "[grid]"; tr ';' '\n' <<<"$2"
-      echo "[params]"; tr ';' '\n' <<<"$3"; } >"$1.ini"
-}
-# sweep NAME [FLAGS]: the sweep of NAME.ini into NAME.out, stderr in NAME.err; sets rc
-sweep() {
-    local name=$1
-    shift
-    cpu_run 120 "$GW" sweep "$name.ini" --out "$name.out" --jobs 1 --quiet "$@" >/dev/null 2>"$name.err"; rc=$?
-}
+# sweep_config NAME MODEL GRID PARAMS, sweep_dashpot_config NAME [DAMPING]
+# (1 below) and sweep_quiet NAME [FLAGS] (NAME.ini into NAME.out, stderr in
+# NAME.err, sets rc): test_lib.sh's
 # said NAME WHAT: the lines of NAME.err saying the WHAT has no effect
 said() { grep -c "^granwave sweep: warning: the $2 has no effect" "$1.err"; }
 # column NAME COL: the table's column COL, one value a line
@@ -48,8 +39,8 @@ column() {
 
 SB="sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
 # --- 1 the sensor's dashpot ---
-config s1 "n = 1, 3;sensor-damping = 1e-12, 10" "$SB"
-sweep s1
+sweep_dashpot_config s1
+sweep_quiet s1
 if [ $rc -eq 0 ] && [ "$(said s1 "sensor body's dashpot")" -eq 1 ] &&
     grep -q "warning: the sensor body's dashpot has no effect in 2 of 4 cases (the first, case 0): its damping ratio c/(2 sqrt(k_s m_s)), at most 1.58e-15 there, is below the case's rtol, and their rows are those of sensor-damping 0 (give a larger sensor-damping)$" s1.err; then
     ok "1 sensor-damping = 1e-12, 10 over n = 1, 3: warned once, 2 of 4 cases, the first case 0, at most 1.58e-15"
@@ -57,15 +48,15 @@ else
     ko "1 sensor-damping = 1e-12, 10: exit $rc, '$(head -c 500 s1.err)'"
 fi
 cp s1.ini k1.ini
-sweep k1 --check
+sweep_quiet k1 --check
 if [ $rc -eq 0 ] && [ "$(said k1 "sensor body's dashpot")" -eq 1 ] && grep -q "in 2 of 4 cases (the first, case 0)" k1.err &&
     [ ! -e k1.out ]; then
     ok "  sweep --check warns alike, nothing written"
 else
     ko "  sweep --check: exit $rc, '$(head -c 400 k1.err)'"
 fi
-config s0 "n = 1, 3;sensor-damping = 1e-30, 10" "$SB"
-sweep s0
+sweep_dashpot_config s0 1e-30
+sweep_quiet s0
 bad=""
 for col in f_max eps_eff tau_n; do
     paste -d' ' <(column s1 "$col") <(column s0 "$col") | sed -n '1p;3p' | # the cases at 1e-12, 1e-30
@@ -77,8 +68,8 @@ else
     ko "  the rows at 1e-12 against 1e-30: exit $rc, differ:$bad"
 fi
 # --- 2 the guide's friction ---
-config g1 "vimp = 0.2, 0.3;guide-viscous = 1e-15, 1e-2" "n = 3;guide-friction = 1e-15"
-sweep g1
+sweep_config g1 chain "vimp = 0.2, 0.3;guide-viscous = 1e-15, 1e-2" "n = 3;guide-friction = 1e-15"
+sweep_quiet g1
 if [ $rc -eq 0 ] && [ "$(said g1 "guide's friction")" -eq 1 ] &&
     grep -q "warning: the guide's friction has no effect in 2 of 4 cases (the first, case 0): its predicted relative effect on the impact, (F_c/v + c_g) t_col/m, at most [0-9.e-]* there, is below the case's rtol.*(give a larger guide-friction or guide-viscous)$" g1.err; then
     ok "2 guide-viscous = 1e-15, 1e-2 at guide-friction 1e-15: warned once, 2 of 4 cases, the first case 0"
@@ -86,21 +77,21 @@ else
     ko "2 guide-viscous = 1e-15, 1e-2: exit $rc, '$(head -c 500 g1.err)'"
 fi
 # --- controls ---
-config c1 "n = 1, 3;sensor-damping = 10, 100" "$SB;guide-viscous = 1e-2"
-sweep c1
+sweep_config c1 chain "n = 1, 3;sensor-damping = 10, 100" "$SB;guide-viscous = 1e-2"
+sweep_quiet c1
 [ $rc -eq 0 ] && ! grep -q "no effect" c1.err &&
     ok "control: sensor-damping = 10, 100 (zeta 0.016, 0.16) and guide-viscous 1e-2 not warned" ||
     ko "control: a dashpot that acts: exit $rc, '$(head -c 300 c1.err)'"
-config c2 "n = 1, 3" "$SB"
-sweep c2
+sweep_config c2 chain "n = 1, 3" "$SB"
+sweep_quiet c2
 [ $rc -eq 0 ] && ! grep -q "no effect" c2.err && ok "control: a sensor body without a dashpot not warned" ||
     ko "control: a sensor body without a dashpot: exit $rc, '$(head -c 300 c2.err)'"
-config c3 "n = 1, 3" "vimp = 0.3"
-sweep c3
+sweep_config c3 chain "n = 1, 3" "vimp = 0.3"
+sweep_quiet c3
 [ $rc -eq 0 ] && [ ! -s c3.err ] && ok "control: the default column warns of nothing" ||
     ko "control: the default column: exit $rc, '$(head -c 300 c3.err)'"
-config c4 "n = 3, 4" "$SB;damping = kk;gamma = 1e-8;sensor-damping = 1e-12"
-sweep c4
+sweep_config c4 chain "n = 3, 4" "$SB;damping = kk;gamma = 1e-8;sensor-damping = 1e-12"
+sweep_quiet c4
 [ $rc -eq 0 ] && [ "$(grep -c "no effect" c4.err)" -eq 2 ] && [ "$(said c4 "sensor body's dashpot")" -eq 1 ] &&
     grep -q "warning: the contact damping has no effect in 2 of 2 cases" c4.err &&
     ok "the contact damping's line and the dashpot's, one each (2 of 2 cases)" ||

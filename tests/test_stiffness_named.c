@@ -23,7 +23,9 @@
  *     does not change that" (kwall alike); the range's top end passes.
  *     Controls: dt 1e-13 (too small for any k) is still refused as the dt's;
  *     k 1e20 at dt 1e-9 runs.
- * Each case runs in its own child process (test_child.h).
+ * Each case runs in its own child process (test_child.h); the refusal
+ * naming k or kwall, the run's status and F_max are gw_test_cases.h's
+ * (test_library_hostile50 checks them too).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <float.h>
@@ -32,42 +34,8 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
-
-/* refused naming WHO ("k" or "kwall") with a range, its top end in *hi */
-static int named(const gw_chain_params *p, const gw_chain_run_opts *o, const char *who, double *hi)
-{
-    gw_err e = {0};
-    const int rc = gw_chain_run_check(p, o, &e);
-    char pre[16];
-    snprintf(pre, sizeof pre, "%s: ", who);
-    double lo = 0;
-    if (!refused(rc, &e, pre) || strncmp(e.msg, pre, strlen(pre)) != 0 || !strstr(e.msg, "N/m^1.5 is outside [") ||
-        sscanf(strstr(e.msg, "outside [") + 9, "%lg, %lg]", &lo, hi) != 2 || !(lo > 0 && lo < *hi)) {
-        printf("%s: '%s'\n", who, e.msg);
-        return 0;
-    }
-    return 1;
-}
-
-/* F_max of the column p under o, or -1 */
-static double run_fmax(const gw_chain_params *p, const gw_chain_run_opts *o)
-{
-    gw_chain *c = NULL;
-    gw_err e = {0};
-    double f = -1;
-    if (gw_chain_create(p, &c, &e) == GW_OK) {
-        gw_chain_result r;
-        memset(&r, 0, sizeof r);
-        if (gw_chain_collide(c, o, &r, &e) == GW_OK)
-            f = r.f_max;
-        else
-            printf("run: %s\n", e.msg);
-        gw_chain_result_free(&r);
-    }
-    gw_chain_free(c);
-    return f;
-}
 
 static int c_kwall_named(void)
 {
@@ -82,7 +50,7 @@ static int c_kwall_named(void)
             if (s)
                 o.solver = gw_solver_rk4;
             double hi = 0, hi2 = 0;
-            EXPECT(named(&p, &o, "kwall", &hi) && hi > 1e15 && hi < 1e40);
+            EXPECT(test_stiffness_refused(&p, &o, "kwall", &hi) && hi > 1e15 && hi < 1e40);
             /* the range's top end passes the check (under the default dt-out,
              * a dt-out that keeps the samples in bound: the default's refusal
              * names dt-out there), 10 % above it is refused naming kwall */
@@ -97,21 +65,15 @@ static int c_kwall_named(void)
             const int rc = gw_chain_run_check(&p, &o, &e);
             EXPECT(rc == GW_OK || (refused(rc, &e, "dt-out: ") && strncmp(e.msg, "kwall: ", 7) != 0));
             p.kwall = 1.1 * hi;
-            EXPECT(named(&p, &o, "kwall", &hi2) && hi2 == hi);
+            EXPECT(test_stiffness_refused(&p, &o, "kwall", &hi2) && hi2 == hi);
         }
     /* the run itself refuses it the same way */
     gw_chain_params p = gw_chain_params_default();
     p.n = 3;
     p.kwall = DBL_MAX;
     gw_chain_run_opts o = gw_chain_run_opts_default();
-    gw_chain *c = NULL;
     gw_err e = {0};
-    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    const int rc = gw_chain_collide(c, &o, &r, &e);
-    gw_chain_result_free(&r);
-    gw_chain_free(c);
+    const int rc = test_chain_run_status(&p, &o, &e);
     EXPECT(refused(rc, &e, "kwall: 1.79769e+308 N/m^1.5 is outside ["));
     return 0;
 }
@@ -124,7 +86,7 @@ static int c_kwall_controls(void)
     p.k = DBL_MAX;
     gw_chain_run_opts o = gw_chain_run_opts_default();
     double hi = 0;
-    EXPECT(named(&p, &o, "k", &hi));
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi));
     p.k = p.kwall = 1e200;
     gw_err e = {0};
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
@@ -144,16 +106,16 @@ static int c_dt_max_contacts(void)
     gw_chain_run_opts o = gw_chain_run_opts_default();
     o.sp.dt_max = 1e-9;
     double hi = 0, hi2 = 0;
-    EXPECT(named(&p, &o, "k", &hi));
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi));
     gw_err e = {0};
     gw_chain_run_check(&p, &o, &e);
     EXPECT(strstr(e.msg, "the dt-max given (1e-09 s)") != NULL);
     /* k 1e30 (it ran on for minutes) too, the same range */
     p.k = 1e30;
-    EXPECT(named(&p, &o, "k", &hi2) && hi2 == hi);
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi2) && hi2 == hi);
     /* rk4 under the dt_max given as well */
     o.solver = gw_solver_rk4;
-    EXPECT(named(&p, &o, "k", &hi2));
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi2));
     /* kwall alike */
     o = gw_chain_run_opts_default();
     o.sp.dt_max = 1e-9;
@@ -161,7 +123,7 @@ static int c_dt_max_contacts(void)
     p = gw_chain_params_default();
     p.n = 3;
     p.kwall = DBL_MAX;
-    EXPECT(named(&p, &o, "kwall", &hi2));
+    EXPECT(test_stiffness_refused(&p, &o, "kwall", &hi2));
     return 0;
 }
 
@@ -176,14 +138,14 @@ static int c_dt_max_controls(void)
     o.sp.dt_max = 1e-9;
     gw_err e = {0};
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
-    EXPECT(run_fmax(&p, &o) > 0);
+    EXPECT(test_chain_fmax(&p, &o) > 0);
     p = gw_chain_params_default();
     p.n = 3;
     o = gw_chain_run_opts_default();
-    const double f0 = run_fmax(&p, &o);
+    const double f0 = test_chain_fmax(&p, &o);
     o.sp.dt_max = 1e-3;
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
-    const double f1 = run_fmax(&p, &o);
+    const double f1 = test_chain_fmax(&p, &o);
     EXPECT(f0 > 0 && fabs(f1 / f0 - 1) < 1e-6);
     return 0;
 }
@@ -200,7 +162,7 @@ static int c_rk4_dt_named(void)
     o.solver = gw_solver_rk4;
     o.sp.dt = 1e-9;
     double hi = 0, hi2 = 0;
-    EXPECT(named(&p, &o, "k", &hi) && hi > 1e20 && hi < 1e40);
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi) && hi > 1e20 && hi < 1e40);
     gw_err e = {0};
     gw_chain_run_check(&p, &o, &e);
     EXPECT(strstr(e.msg, "the dt given (1e-09 s) does not change that") != NULL);
@@ -210,23 +172,17 @@ static int c_rk4_dt_named(void)
         printf("k %g at dt 1e-9: '%s'\n", hi, e.msg);
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
     p.k = 1.1 * hi;
-    EXPECT(named(&p, &o, "k", &hi2) && hi2 == hi);
+    EXPECT(test_stiffness_refused(&p, &o, "k", &hi2) && hi2 == hi);
     /* the run itself refuses it the same way */
     p.k = DBL_MAX;
-    gw_chain *c = NULL;
-    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    const int rc = gw_chain_collide(c, &o, &r, &e);
-    gw_chain_result_free(&r);
-    gw_chain_free(c);
+    const int rc = test_chain_run_status(&p, &o, &e);
     EXPECT(refused(rc, &e, "k: 1.79769e+308 N/m^1.5 is outside ["));
     /* kwall under the dt given names it too */
     p = gw_chain_params_default();
     p.n = 3;
     p.kwall = DBL_MAX;
     o.dt_out = 1e-6;
-    EXPECT(named(&p, &o, "kwall", &hi2));
+    EXPECT(test_stiffness_refused(&p, &o, "kwall", &hi2));
     gw_chain_run_check(&p, &o, &e);
     EXPECT(strstr(e.msg, "the dt given (1e-09 s) does not change that") != NULL);
     return 0;
@@ -246,7 +202,7 @@ static int c_rk4_dt_controls(void)
     o.sp.dt = 1e-9;
     p.k = 1e20;
     EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
-    EXPECT(run_fmax(&p, &o) > 0);
+    EXPECT(test_chain_fmax(&p, &o) > 0);
     return 0;
 }
 

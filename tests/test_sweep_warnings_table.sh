@@ -43,17 +43,9 @@ hostile_setup "$@"
 cd "$tmp" || exit 1
 export LC_ALL=C
 
-# config NAME MODEL GRID PARAMS: NAME.ini, GRID and PARAMS its sections' lines ("key = values", ';' between)
-config() {
-    { echo "[sweep]"; echo "model = $2"; echo "[grid]"; tr ';' '\n' <<<"$3"
-      echo "[params]"; tr ';' '\n' <<<"$4"; } >"$1.ini"
-}
-# sweep NAME [FLAGS]: NAME.ini into NAME.out, stderr in NAME.err; sets rc
-sweep() {
-    local name=$1
-    shift
-    cpu_run 120 "$GW" sweep "$name.ini" --out "$name.out" --jobs 1 --quiet "$@" >/dev/null 2>"$name.err"; rc=$?
-}
+# sweep_config NAME MODEL GRID PARAMS, sweep_dashpot_config NAME and
+# sweep_quiet NAME [FLAGS] (NAME.ini into NAME.out, stderr in NAME.err, sets
+# rc): test_lib.sh's
 # table_warnings NAME: the texts of NAME.out/results.csv's "# warning:" lines
 table_warnings() { sed -n 's/^# warning: //p' "$1.out/results.csv" 2>/dev/null; }
 # said NAME: the texts of NAME.err's warning lines
@@ -81,8 +73,8 @@ resumed() {
 }
 
 # --- 1 the check pass's warning: a sensor dashpot of no effect ---
-config d chain "n = 1, 3;sensor-damping = 1e-12, 10" "sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
-sweep d
+sweep_dashpot_config d
+sweep_quiet d
 w=$(table_warnings d)
 if [ $rc -eq 0 ] && [ "$(grep -c "^granwave sweep: warning: the sensor body's dashpot" d.err)" -eq 1 ] &&
     grep -q "^the sensor body's dashpot has no effect in 2 of 4 cases (the first, case 0): " <<<"$w" &&
@@ -93,8 +85,8 @@ else
 fi
 
 # --- 2 the rows' warning: a case cut at t-max ---
-config u chain "n = 6:7" "t-max = 1.94e-4"
-sweep u
+sweep_config u chain "n = 6:7" "t-max = 1.94e-4"
+sweep_quiet u
 w=$(table_warnings u)
 if [ $rc -eq 0 ] && [ "$w" = "$(said u)" ] && placed u &&
     grep -q "^1 of 2 cases did not end their collision (column converged = 0; the first, case 1)" <<<"$w"; then
@@ -124,7 +116,7 @@ fi
 # --- 4 a layer sweep's settling warning; layer-stats reads the table ---
 make_sample d2000.txt --n 40 --seed 1 --density 2000
 settling_sweep_ini l.ini "$tmp/d2000.txt"
-sweep l
+sweep_quiet l
 w=$(table_warnings l)
 if [ $rc -eq 0 ] && [ "$w" = "$(said l)" ] && placed l &&
     grep -q "^2 of 2 cases run on a sample settled under another material or not settled" <<<"$w"; then
@@ -231,8 +223,8 @@ else
 fi
 
 # --- control: a sweep without warnings has no such line ---
-config c chain "n = 1:2" ""
-sweep c
+sweep_config c chain "n = 1:2" ""
+sweep_quiet c
 if [ $rc -eq 0 ] && [ ! -s c.err ] && [ -z "$(table_warnings c)" ] && ! grep -q '^# warning' c.out/results.csv &&
     placed c; then
     ok "control: a sweep without warnings: no '# warning:' line, the header after the '# grid' line"

@@ -20,26 +20,9 @@ import sys
 import pytest
 
 import granwave
+from sample_mirror import _Sample  # the struct's mirror, shared
 
 GW_EINVAL = -1
-
-
-class _Settled(ctypes.Structure):
-    """gw_layer_settled (layer/gw_layer.h)."""
-    _fields_ = [("recorded", ctypes.c_int), ("shear_modulus", ctypes.c_double), ("poisson", ctypes.c_double),
-                ("friction_deg", ctypes.c_double), ("density", ctypes.c_double), ("gravity", ctypes.c_double),
-                ("mass_law", ctypes.c_int), ("line", ctypes.c_long), ("clump_mass", ctypes.c_int)]
-
-
-class _Sample(ctypes.Structure):
-    """gw_layer_sample (layer/gw_layer.h); its size is checked against the library's."""
-    _fields_ = [("n", ctypes.c_int), ("width", ctypes.c_double), ("rm", ctypes.c_double),
-                ("volume_ratio", ctypes.c_double), ("porosity", ctypes.c_double), ("seed", ctypes.c_long),
-                ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
-                ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
-                ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
-                ("settled", _Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.c_void_p),
-                ("settled_converged", ctypes.c_int)]
 
 
 def _opaque(lib, name):

@@ -25,7 +25,9 @@ import textwrap
 
 import pytest
 
-CHILD = textwrap.dedent("""
+# what both child scripts begin with: the module, and SIGINT sent to the
+# process at once (fire) or once a call has used 0.5 s of CPU (fire_in_call)
+PRELUDE = textwrap.dedent("""
     import json, os, signal, sys, threading, time
     import granwave
 
@@ -39,7 +41,9 @@ CHILD = textwrap.dedent("""
         while time.process_time() < cpu0 + 0.5:
             time.sleep(0.01)
         fire()
+""")
 
+CHILD = PRELUDE + textwrap.dedent("""
     # called, not eval'd: a KeyboardInterrupt out of eval() makes CPython
     # end the process with SIGINT at exit, even when it was caught
     calls = {
@@ -96,21 +100,7 @@ def test_ctrl_c_stops_the_call(call):
     assert out["sleep"] == "KeyboardInterrupt" and out["sleep_elapsed"] < 60.0, out
 
 
-HANDLERS = textwrap.dedent("""
-    import json, os, signal, sys, threading, time
-    import granwave
-
-    def fire():
-        os.kill(os.getpid(), signal.SIGINT)
-
-    def fire_in_call(cpu0):
-        # once the call has used 0.5 s of CPU (process time, every thread): in
-        # the call whatever the load, where a timer of 0.5 s of the clock could
-        # fire before it began
-        while time.process_time() < cpu0 + 0.5:
-            time.sleep(0.01)
-        fire()
-
+HANDLERS = PRELUDE + textwrap.dedent("""
     out = {}
     # a handler of the program's own: it runs (once), no KeyboardInterrupt, and
     # the stopped call fails with status -9

@@ -180,13 +180,32 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * 6.8 to 18.8 at 1e-10 and 1e-8 (a 3-bead drop over 1 ms on 1e-7 kg, 200,643
  * steps undamped: 31). */
 #define SENSOR_WEDGE_ZETA 0.08
+#define SENSOR_WEDGE_P 5.0
 #define SENSOR_FOLLOW_ZETA_BDF 0.033
+#define SENSOR_FOLLOW_ZETA_BDF_TOL 0.034
 #define SENSOR_FOLLOW_ZETA_BEYOND 0.05
 #define SENSOR_FOLLOW_ZETA_DIRK 0.008
 #define SENSOR_FAST_STEPS 20.0
 #define SENSOR_DIRK_OVER 16.0
 #define SENSOR_DIRK_FAST 1e-4
 #define SENSOR_IMEX_RATE 3e7
+/* Measured over a grid at looser tolerances (see sensor_steps' table):
+ * bdf steps over a ring faster than SENSOR_BDF_OVER_W (tol / 1e-8)^-a rad/s
+ * (a = SENSOR_BDF_OVER_LOOSE at and above 1e-8, SENSOR_BDF_OVER_TIGHT below),
+ * dirk's cap on the undamped ring falls as tol^-SENSOR_DIRK_OVER_TOL from 16
+ * floors at 1e-12, dirk on a body faster than SENSOR_DIRK_LIGHT_W takes
+ * SENSOR_DIRK_LIGHT (tol / 1e-6)^SENSOR_DIRK_LIGHT_TOL steps a square root of
+ * a radian, imex's steps a radian fall as tol^-SENSOR_IMEX_TOL. */
+#define SENSOR_BDF_OVER_W 1.3e9
+#define SENSOR_BDF_OVER_LOOSE 0.4
+#define SENSOR_BDF_OVER_TIGHT 0.7
+#define SENSOR_BDF_OVER_P 6.0
+#define SENSOR_DIRK_OVER_TOL 0.25
+#define SENSOR_DIRK_LIGHT 36.0
+#define SENSOR_DIRK_LIGHT_TOL 0.58
+#define SENSOR_DIRK_LIGHT_W 1.5e9
+#define SENSOR_DIRK_OVERDAMPED 0.15
+#define SENSOR_IMEX_TOL 0.225
 
 /* The steps an explicit method (cvode adams, arkode erk) takes over t_len on
  * a body of rate omega and damping ratio zeta, continuous in zeta: up to
@@ -241,7 +260,7 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
     double tol = sp ? fmax(sp->rtol, sp->atol) : 1e-12;
     if (!(tol > 0))
         tol = 1e-12;
-    *per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2));
+    *per_rad = fmax(3.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2));
     const double undamped = *per_rad * *omega * t_len;
     const char *used = type && type != gw_solver_rk4 ? gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT)
                                                      : "";
@@ -251,14 +270,20 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
     const double base = sp && sp->dt_max > 0 ? t_len / sp->dt_max : 0.0;
     if (strcmp(used, "imex") == 0) {
         /* steps over the ring, more slowly than dirk (SENSOR_IMEX_RATE) */
-        const double imex = undamped * fmin(1.0, sqrt(SENSOR_IMEX_RATE / *omega)) * sqrt(1.0 + *zeta / 2.0);
+        const double imex = undamped * SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -SENSOR_IMEX_TOL) /
+                            *per_rad * fmin(1.0, sqrt(SENSOR_IMEX_RATE / *omega)) * sqrt(1.0 + *zeta / 2.0);
         *damped = imex < undamped ? 2 : 0;
         return base + imex;
     }
-    if (!(*zeta > 0) && !dirk)
+    if (!(*zeta > 0) && !dirk && !bdf)
         return base + undamped;
-    if (strcmp(used, "erk") == 0 || strcmp(used, "adams") == 0)
-        return base + sensor_fast_steps(*omega, *zeta, *per_rad, strcmp(used, "adams") == 0, 0, t_len);
+    if (strcmp(used, "erk") == 0 || strcmp(used, "adams") == 0) {
+        /* at least the contacts' events resolved, as for bdf and dirk below
+         * (erk on 0.1 kg at 0.05 of critical, 1e-10: 965 steps, 557 counted) */
+        const double events = 4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0);
+        return base + fmax(events * *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)),
+                           sensor_fast_steps(*omega, *zeta, *per_rad, strcmp(used, "adams") == 0, 0, t_len));
+    }
     if (!bdf && !dirk)
         return base + undamped;
     /* The collision's span, two expected collision lengths at most; beyond it
@@ -278,13 +303,26 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
                  floor_steps = events * *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)),
                  /* dirk steps over even the undamped ring (no more than
                   * SENSOR_DIRK_OVER times the floor), bdf does not */
-                 over_c = dirk ? SENSOR_DIRK_OVER * floor_steps : INFINITY,
+                 over_c = dirk ? SENSOR_DIRK_OVER * pow(fmax(tol, 1e-12) / 1e-12, -SENSOR_DIRK_OVER_TOL) * floor_steps
+                               : INFINITY,
+                 /* bdf steps over a ring the collision excites below the
+                  * tolerance (its amplitude falls as omega^-1.5) */
+                 w_over = SENSOR_BDF_OVER_W * pow(fmax(tol, 1e-15) / 1e-8, tol < 1e-8 ? -SENSOR_BDF_OVER_TIGHT
+                                                                                       : -SENSOR_BDF_OVER_LOOSE),
+                 keep = bdf ? 1.0 / (1.0 + pow(*omega / w_over, SENSOR_BDF_OVER_P)) : 1.0,
                  over_b = t_b > 0 ? over_c * t_b / t_span : 0.0,
-                 wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, 3) : 1.0,
+                 wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, SENSOR_WEDGE_P) : 1.0,
                  decay = z > 0 ? floor_steps * wedge / fmin(z, 1.0) : INFINITY,
-                 follow = fmin(u_c, over_c) * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
+                 /* dirk's steps on an overdamped body grow with it (1e-6 kg at
+                  * 10 of critical: 2,373 steps at 1e-8, 1,986 counted) */
+                 over_damped = dirk ? 1.0 + SENSOR_DIRK_OVERDAMPED * sqrt(fmax(z - 1.0, 0.0)) : 1.0,
+                 /* bdf follows the damped ring longer at a looser tolerance (1e-3 kg at
+                  * 0.05 of critical: 6,584 steps at 1e-8, 0.54 of the undamped) */
+                 follow = fmin(u_c, over_c) * keep *
+                          exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF * pow(fmax(tol, 1e-12) / 1e-12, SENSOR_FOLLOW_ZETA_BDF_TOL)
+                                        : SENSOR_FOLLOW_ZETA_DIRK)),
                  beyond = t_b > 0 ? fmax(floor_steps * t_b / t_span,
-                                         fmin(u_b, over_b) *
+                                         fmin(u_b, over_b) * keep *
                                              exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BEYOND : SENSOR_FOLLOW_ZETA_DIRK)))
                                   : 0.0,
                  /* dirk on a heavily overdamped body: steps growing with its
@@ -292,9 +330,16 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
                  fast = dirk ? SENSOR_DIRK_FAST * *per_rad / SENSOR_STEPS_PER_RAD * *omega *
                                    (z + sqrt(fmax(z * z - 1.0, 0.0))) * t_len
                              : 0.0,
-                 ring = fmin(decay, fmax(floor_steps, follow)) + beyond + fast;
-    if (!(ring < undamped))
-        return base + undamped;
+                 /* dirk at a loose tolerance on a light body */
+                 x_light = pow(*omega / SENSOR_DIRK_LIGHT_W, 6.0),
+                 light = dirk ? SENSOR_DIRK_LIGHT * pow(fmax(tol, 1e-15) / 1e-6, SENSOR_DIRK_LIGHT_TOL) *
+                                    sqrt(*omega * t_len) * x_light / (1.0 + x_light)
+                              : 0.0,
+                 /* bdf: the collision's own steps (the floor) beside the ring it follows */
+                 ring = fmin(decay, bdf ? floor_steps + follow : fmax(floor_steps, follow)) * over_damped + beyond + fast + light;
+    /* bdf counts the collision's own steps (the floor) beside the ring */
+    if (!(ring < undamped + (bdf ? floor_steps : 0.0)))
+        return base + undamped + (bdf ? floor_steps : 0.0);
     *damped = z > 0 ? 1 : 2;
     return base + ring;
 }
@@ -1314,8 +1359,12 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
      * before: a tenth of the 7-37 measured) */
     double omega, per_rad, zeta;
     int damped;
-    if (pl.type != gw_solver_rk4)
-        s = fmax(s, sensor_steps(p, pl.type, &pl.sp, pl.t_expect, &omega, &per_rad, &zeta, &damped));
+    if (pl.type != gw_solver_rk4) {
+        /* bdf takes the collision's own steps beside the body's */
+        const double b = sensor_steps(p, pl.type, &pl.sp, pl.t_expect, &omega, &per_rad, &zeta, &damped);
+        const int add = b > 0 && strcmp(gw_solver_method_used(pl.type, pl.sp.method), "bdf") == 0;
+        s = add ? s + b : fmax(s, b);
+    }
     int k = 0;
     double rate = 0, t_used = 0;
     s = fmax(s, drag_steps(p, pl.type, &pl.sp, &o->sp, o->steps_per_tc, pl.t_expect, pl.t_max, &k, &rate, &t_used));

@@ -451,7 +451,9 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
                  w_over = SENSOR_BDF_OVER_W * pow(fmax(tol, 1e-15) / 1e-8, tol < 1e-8 ? -SENSOR_BDF_OVER_TIGHT
                                                                                        : -SENSOR_BDF_OVER_LOOSE),
                  keep = bdf ? 1.0 / (1.0 + pow(*omega / w_over, SENSOR_BDF_OVER_P)) : 1.0,
-                 over_b = t_b > 0 ? over_c * t_b / t_span : 0.0,
+                 /* beyond the collision (a drop) at 16 floors whatever the
+                  * tolerance, as bdf's ring there is not kept (below) */
+                 over_b = t_b > 0 ? (dirk ? SENSOR_DIRK_OVER * floor_steps : INFINITY) * t_b / t_span : 0.0,
                  wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, SENSOR_WEDGE_P) : 1.0,
                  decay = z > 0 ? floor_steps * wedge / fmin(z, 1.0) : INFINITY,
                  /* dirk's steps on an overdamped body grow with it (1e-6 kg at

@@ -30,7 +30,9 @@ column.md's closed forms, final velocities, E_rel/E_K, energy errors, the N = 5.
 speeds and the memory bound's messages; drop.md's comparison with chain, its 300 ms runs,
 gaps and first collision; sheets.md's tau_max(1) under every law for the bare sensor and the
 four target sheets, brass's yield stresses, the loss, guide friction and PVC's F_max(N); the
-exact 3 m/s impact of outcomes.md (about 20 s of CPU more). And the defaults the `--help` of
+exact 3 m/s impact of outcomes.md (about 20 s of CPU more). Since the forty-sixth session also the
+crown speeds README.md and crowns.md quote over 16 impact points and layer.md's one-impact crown
+fits (34 impacts, about 2 s of CPU). And the defaults the `--help` of
 chain, drop, falcon, dispersion, layer-make and layer-impact states, against the settings
 the runs record (HELP_DEFAULTS: a numeric [default] read from the help line, or a formula
 such as dt-max's quarter of the shortest binary contact computed from the run's closed forms).

@@ -30,7 +30,9 @@ column.md's closed forms, final velocities, E_rel/E_K, energy errors, the N = 5.
 speeds and the memory bound's messages; drop.md's comparison with chain, its 300 ms runs,
 gaps and first collision; sheets.md's tau_max(1) under every law for the bare sensor and the
 four target sheets, brass's yield stresses, the loss, guide friction and PVC's F_max(N); the
-exact 3 m/s impact of outcomes.md (about 20 s of CPU more). And the defaults the `--help` of
+exact 3 m/s impact of outcomes.md (about 20 s of CPU more). Since the forty-sixth session also the
+crown speeds README.md and crowns.md quote over 16 impact points and layer.md's one-impact crown
+fits (34 impacts, about 2 s of CPU). And the defaults the `--help` of
 chain, drop, falcon, dispersion, layer-make and layer-impact states, against the settings
 the runs record (HELP_DEFAULTS: a numeric [default] read from the help line, or a formula
 such as dt-max's quarter of the shortest binary contact computed from the run's closed forms).
@@ -669,6 +671,60 @@ CLAIMS.append(("docs/outcomes.md", "the same impact gives e_n 0.149848, T_f 48.0
                 ["layer-impact", "--sample", "s100.txt", "--exact", "--vi", "3", "--t-max", "0.05", "--json"]],
                lambda j: (j[1]["e_n"], j[1]["t_f"] * 1e3, j[1]["penetration"]),
                lambda x: f"e_n {x[0]:.6f}, T_f {x[1]:.3f} ms and a penetration of {x[2]:.8f} m"))
+
+
+# README.md's and crowns.md's crown speeds, as data/measured/layer_wave_speed/README.md runs them: 16
+# impact points 0.15 m apart around the box centre, `--full --t-max 0.02`, the mean +- standard error
+# over the points of the cross-correlation and strain-peak speeds (series disc_r7 at 20 m/s on the
+# README's stored sample, sphere at 40 m/s on its sphere-mass sample); 32 impacts, about 2 s of CPU
+def _crown_runs(sample, vi, extra=()):
+    return [["layer-impact", "--sample", sample, "--vi", vi, "--x", repr(round((k - 7.5) * 0.15, 10)), "--full",
+             "--t-max", "0.02", *extra, "--json"] for k in range(16)]
+
+
+def _mean_se(js, key):
+    v = [j[key] for j in js]
+    m = sum(v) / len(v)
+    return m, (sum((x - m) ** 2 for x in v) / (len(v) - 1) / len(v)) ** 0.5
+
+
+def _near(quoted, *values):
+    """quoted ("716 +- 12") when each value is within 0.6 of its quoted whole number, else the values
+    as the page would write them: the stored series were rounded from a mean of 715.50 where today's
+    runs give 715.48, so a whole m/s either side of a .5 is not a drift."""
+    q = [float(t) for t in re.findall(r"\d+", quoted)]
+    if len(q) == len(values) and all(abs(a - b) <= 0.6 for a, b in zip(q, values)):
+        return quoted
+    return " +- ".join(f"{v:.0f}" for v in values)
+
+
+_R7_20 = _crown_runs("{SRC}/data/measured/restitution_full/sample.txt", "20", ("--rings", "7"))
+_SPHERE_40 = _crown_runs("{SRC}/data/measured/layer_wave_speed/sample_sphere.txt", "40")
+CLAIMS += [
+    ("README.md", "at 20 m/s on the 7 inner rings 716 +- 12 m/s against 702 +- 16 by peak picking", _R7_20,
+     lambda j: (_mean_se(j, "wave_speed_xcorr"), _mean_se(j, "wave_speed")),
+     lambda x: f"{_near('716 +- 12', *x[0])} m/s against {_near('702 +- 16', *x[1])} by"),
+    ("docs/crowns.md", "| 671 +- 11 | 716 +- 12 | 760 +- 13 |", _R7_20, lambda j: _mean_se(j, "wave_speed_xcorr"),
+     lambda x: f"| 671 +- 11 | {_near('716 +- 12', *x)} | 760"),
+    ("docs/crowns.md", "| 662 +- 14 | 702 +- 16 | 744 +- 19 |", _R7_20, lambda j: _mean_se(j, "wave_speed"),
+     lambda x: f"| 662 +- 14 | {_near('702 +- 16', *x)} | 744"),
+    ("README.md", "~1000 m/s is reached at 40 m/s with sphere masses (1032 +- 27)", _SPHERE_40,
+     lambda j: _mean_se(j, "wave_speed_xcorr"), lambda x: f"({_near('1032 +- 27', *x)})"),
+    ("docs/crowns.md", "| 890 +- 22 | 1032 +- 27 | 1207 +- 32 |", _SPHERE_40,
+     lambda j: _mean_se(j, "wave_speed_xcorr"), lambda x: f"| 890 +- 22 | {_near('1032 +- 27', *x)} | 1207"),
+    ("docs/crowns.md", "| 797 +- 26 | 934 +- 34 | 1108 +- 37 |", _SPHERE_40,
+     lambda j: _mean_se(j, "wave_speed"), lambda x: f"| 797 +- 26 | {_near('934 +- 34', *x)} | 1108"),
+]
+# layer.md's one impact at the box centre of each sample (`--full --t-max 0.012`), the strain peaks' fit
+# and the kinetic peaks' speed
+_CENTRE = [["layer-impact", "--sample", "{SRC}/data/measured/" + f, "--vi", "20", "--full", "--t-max", "0.012",
+            "--json"] for f in ("restitution_full/sample.txt", "layer_wave_speed/sample_sphere.txt")]
+CLAIMS.append(("docs/layer.md", "gives c = 575 +- 21 m/s from the strain peaks (611 from the kinetic peaks) with disc",
+               _CENTRE[0], lambda j: (j["wave_speed"], j["wave_speed_err"], j["wave_speed_kinetic"]),
+               lambda x: "c = {:.0f} +- {:.0f} m/s from the strain peaks ({:.0f} from".format(*x)))
+CLAIMS.append(("docs/layer.md", "and 892 +- 24 m/s (948) with sphere masses on its sphere-mass sample",
+               _CENTRE[1], lambda j: (j["wave_speed"], j["wave_speed_err"], j["wave_speed_kinetic"]),
+               lambda x: "and {:.0f} +- {:.0f} m/s ({:.0f}) with".format(*x)))
 
 
 def _pair_tau(j, v):

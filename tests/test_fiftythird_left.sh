@@ -19,6 +19,14 @@
 #    k^(2/3) n m v^2 / 2)^(3/5) = 0.37 N, under the threshold 6.6 N. Refused
 #    now before any run (exit 2 naming --threshold, k and kwall); --kwall
 #    1e14 likewise. Control: the defaults run.
+#  4 drop --n 1500 was refused as held on the wall (naming --gravity) after
+#    the whole drop to t_max, about 27 s of CPU: its first collision's t_max
+#    is at least the end of bead 1's first contact, so the drop now stops with
+#    the same refusal once bead 1 is still on the sensor past the t_max the
+#    plan admits (0.0011 s here; 2.8 s of CPU). Not before the run: a held
+#    column bounces (drop --n 100 --height 2e-5 --t-max 0.02: 39 impacts),
+#    its first collision then cut short and run. Control: a held column
+#    within the bound runs.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -73,5 +81,13 @@ REFUSE_TIMEOUT=3 refused "3 wavespeed --kwall 1e14: likewise" \
     "^granwave wavespeed --threshold: .*above the largest force any contact of the 8-bead front column can carry" \
     wavespeed --n 3:8 --vimp 0.3,0.4 --kwall 1e14 --out "$tmp/o"
 runs_quiet "control: wavespeed --n 3:8 --vimp 0.3,0.4 runs" wavespeed --n 3:8 --vimp 0.3,0.4
+
+# 4 drop's column held on the wall: refused once bead 1 is still on the sensor
+# past the time the first collision's plan admits, not after the whole drop
+REFUSE_TIMEOUT=12 refused "4 drop --n 1500: held on the wall, refused naming --gravity within 12 s of CPU (was 27 s)" \
+    "^granwave drop --gravity: 9.81 m/s\^2 takes back the impact speed .* lower t-max to 0.0011 s or less" \
+    drop --n 1500 --quiet --out "$tmp/o"
+runs_quiet "control: drop --n 40 --height 1e-6 --t-max 0.005 (held, within the bound) runs" \
+    drop --n 40 --height 1e-6 --t-max 0.005
 
 test_summary test_fiftythird_left

@@ -762,6 +762,24 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     return GW_DRIVE_ON;
 }
 
+double chain_collide_drop_held_t(const gw_chain *c, const gw_chain_run_opts *o)
+{
+    const gw_chain_params *p = gw_chain_get_params(c);
+    gw_chain_params pc = *p;
+    pc.masses = c->m;
+    pc.kc = p->n > 1 ? c->kc : NULL;
+    return chain_collide_held_t(&pc, o);
+}
+
+int chain_collide_drop_held_refuse(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
+{
+    const gw_chain_params *p = gw_chain_get_params(c);
+    gw_chain_params pc = *p;
+    pc.masses = c->m;
+    pc.kc = p->n > 1 ? c->kc : NULL;
+    return chain_collide_held_refuse(&pc, o, err);
+}
+
 static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, int rerun,
                        gw_chain_progress_fn progress, void *pctx, chain_column_end *end, gw_chain_result *r,
                        gw_err *err);

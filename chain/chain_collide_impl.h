@@ -38,5 +38,12 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
  * and a column held by gravity's): a run whose t_max is cut shorter later
  * (the drop's first collision) meets these whatever its cut. */
 int chain_collide_plan_early(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err);
+/* The t_max above which the plan refuses a column held on the wall by gravity
+ * (chain_held_check: its samples times beads above the bound), INFINITY when
+ * gravity does not hold it; and that refusal at o's t_max (GW_EINVAL, or
+ * GW_OK when it passes). The drop stops at the first: its first collision's
+ * t_max is at least the end of bead 1's first contact. */
+double chain_collide_held_t(const gw_chain_params *p0, const gw_chain_run_opts *o);
+int chain_collide_held_refuse(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err);
 
 #endif

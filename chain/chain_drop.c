@@ -154,6 +154,10 @@ typedef struct drop_state {
      * chain_collide.c's held_by_gravity) */
     double q_min;
     int fell_back;
+    /* the time past which bead 1 still on the sensor in its first contact
+     * makes the first collision's plan refuse the run (a column held on the
+     * wall by gravity, chain_collide_drop_held_t; INFINITY: never) */
+    double t_held;
 } drop_state;
 
 /* Wall time after which the run reports even short of a hundredth of its
@@ -473,6 +477,18 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
  * run without an error, its failure (< 0) is the run's. */
 static int drop_observed(drop_state *st, double t, const double *y, int is_event, gw_err *err)
 {
+    /* the first collision runs at least to the end of bead 1's first
+     * contact: past t_held still in it, its plan refuses the run, which the
+     * whole drop to t_max ran before (drop --n 1500: 27 s of CPU, then exit 2) */
+    if (t > st->t_held && isnan(st->t_end1)) {
+        gw_chain_run_opts o1 = *st->o;
+        o1.dt_out = 0;
+        o1.t_max = st->p->t_max;
+        int hr = chain_collide_drop_held_refuse(st->d->c, &o1, err);
+        if (hr != GW_OK)
+            return hr;
+        st->t_held = INFINITY;
+    }
     int sr = observe(st, t, y, is_event);
     if (sr < 0)
         return gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s: %s", t, gw_strerror(sr));
@@ -679,6 +695,7 @@ static int drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o, g
     drop_sys d;
     memset(&d, 0, sizeof d);
     drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN, .t_sampled = -INFINITY,
+                     .t_held = INFINITY,
                      .progress = progress, .pctx = pctx, .dt_out = o->dt_out > 0 ? o->dt_out : 1e-6};
     /* the drop over t_max, then its first collision again by the chain's own
      * code (first_collision), at most as long: nearly as much work again (43
@@ -760,6 +777,8 @@ static int drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o, g
         (rc = chain_ring_explicit_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_collide_drop_check(c, &o1, err)) != GW_OK)
         goto done;
+    if (!rerun) /* the rerun of the chatter check runs no first collision */
+        st.t_held = chain_collide_drop_held_t(c, &o1);
     st.type = type;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;

@@ -437,6 +437,14 @@ int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight
  * run only after the whole drop, about 23 s for --n 3 --radii
  * 4e-3,1e-6,4e-3. GW_EINVAL naming the bound. */
 int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err);
+/* The first collision's bound of a column held on the wall by gravity
+ * (chain_collide_held_t, on the chain's own masses): the t beyond which its
+ * t_max is refused (INFINITY: not held), and that refusal at o's t_max. The
+ * drop's first collision runs to at least the end of bead 1's first contact:
+ * a drop whose bead 1 is still on the sensor past that t is refused there,
+ * not after the whole drop (drop --n 1500: 27 s of CPU). */
+double chain_collide_drop_held_t(const gw_chain *c, const gw_chain_run_opts *o);
+int chain_collide_drop_held_refuse(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err);
 
 /* Half the period of the column's mass and a sensor body's M on the sensor's
  * spring, pi sqrt((sum m + M) / k_s), s: the time a column heavier than the

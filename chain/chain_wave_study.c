@@ -216,6 +216,54 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
     return rc;
 }
 
+/* A front threshold no contact can reach, judged before any run: an elastic
+ * Hertz contact F = k d^(3/2) stores U = (2/5) F^(5/3) / k^(2/3), and without
+ * gravity no contact can hold more than the column's kinetic energy E = n m
+ * v^2 / 2 (damping, a guide and the sensor body only take energy), so F <=
+ * (5/2 k^(2/3) E)^(3/5). A threshold above that at any speed ran every
+ * column and then failed ("no front fit": wavespeed --n 3:8 --vimp 0.3,0.4
+ * --k 1000 spent 13.7 s of CPU, the bound 0.37 N under a threshold of 6.6 N;
+ * --kwall 1e14 likewise). Refused naming --threshold, the largest fraction
+ * this bound admits, and k and kwall (the threshold is a fraction of one
+ * bead's F_max on the wall). Necessary, not sufficient: a threshold under the
+ * bound may still be above what the column's contacts reach. */
+static int front_reach_check(const gw_chain_params *p, int n, const double *vimp, int nv, double frac, gw_err *err)
+{
+    if (p->gravity > 0 || n < 5)
+        return GW_OK;
+    double mass = 0;
+    for (int i = 0; i < n; i++)
+        mass += p->masses ? p->masses[i] : p->mass;
+    double kmax = p->k; /* the stiffest bead contact: the largest force for an energy */
+    for (int i = 0; p->kc && i < n - 1; i++)
+        kmax = fmax(kmax, p->kc[i]);
+    int worst = -1;
+    double fit = INFINITY, bound_w = 0, thr_w = 0;
+    for (int iv = 0; iv < nv; iv++) {
+        const double e = 0.5 * mass * vimp[iv] * vimp[iv];
+        const double bound = pow(2.5 * pow(kmax, 2.0 / 3.0) * e, 0.6);
+        const double f1 = gw_chain_fmax1(p->masses ? p->masses[0] : p->mass, p->kwall, vimp[iv]);
+        if (!(bound > 0) || !(f1 > 0) || !isfinite(bound) || !isfinite(f1))
+            continue;
+        if (bound / f1 < fit)
+            fit = bound / f1;
+        if (frac * f1 > bound && (worst < 0 || frac * f1 / bound > thr_w / bound_w))
+            worst = iv, bound_w = bound, thr_w = frac * f1;
+    }
+    if (worst < 0)
+        return GW_OK;
+    char fix[96] = "";
+    const double two = fit > 0 ? pow(10, floor(log10(fit)) - 1) : 0; /* two digits, rounded down */
+    if (two > 0 && floor(fit / two) * two >= 1e-6)
+        gw_snprintf(fix, sizeof fix, "lower it to %g or less (that alone may not be enough), ", floor(fit / two) * two);
+    return gw_err_set(err, GW_EINVAL,
+                      "threshold: %g of F_max(1) is %.4g N at v_imp = %g m/s (one bead on this wall, kwall %g "
+                      "N/m^1.5), above the largest force any contact of the %d-bead front column can carry, %.4g N "
+                      "(all its kinetic energy in one contact of k = %g N/m^1.5): no contact would reach it; %sraise "
+                      "k or lower kwall",
+                      frac, thr_w, vimp[worst], p->kwall, n, bound_w, kmax, fix);
+}
+
 /* tau_N line, period, mean wall force and the three speeds at velocity iv. */
 static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, const gw_chain_result *rv,
                        int a, int per_v, double frac, int iv, gw_chain_wavespeed_outcome *o,
@@ -470,6 +518,8 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
     rc = gw_chain_setup_resolve(&col, &r, err);
     if (rc == GW_OK)
         rc = chain_damping_study_check(&r.params, a, NULL, err);
+    if (rc == GW_OK) /* before any column runs */
+        rc = front_reach_check(&r.params, (int)b, out->v_imp, nv, s->threshold, err);
     if (rc == GW_OK) { /* as the JSON's settings.model */
         out->gamma = r.params.gamma;
         out->alpha = r.params.alpha;

@@ -598,7 +598,8 @@ int gw_layer_make_result_check(const gw_layer_make_result *r, double t_max, gw_e
  * (window area), the area exact up to rounding (Green's theorem on the
  * union's boundary; before session 21 a 600 x 600 sampling grid, which
  * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
- * not positive and finite), the sample counts discs without its x, y or r,
+ * not positive and finite), no disc reaches into it (1 before session 46),
+ * the sample counts discs without its x, y or r,
  * holds a disc of a coordinate not finite or a radius not > 0 (such a disc
  * was left out before session 34: the porosity of the others), fails any
  * other limit the sample reader applies (n above 1e7, a radius outside

@@ -893,6 +893,9 @@ int layer_sample_form_check(const gw_layer_sample *s, const char *path, int stat
  * first): for the reader's porosity check and for layer-make, whose sample
  * is checked after. */
 double layer_sample_porosity_of(const gw_layer_sample *s);
+/* 1 when no disc of s reaches into the porosity's window (its porosity NaN:
+ * not measurable), else 0. */
+int layer_sample_window_empty(const gw_layer_sample *s);
 int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err);
 /* The springs of L's contacts (its state's F_t, clamped to the cap) as
  * displacements at the overlaps of the discs x, y, r of a box of width

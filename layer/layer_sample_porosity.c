@@ -192,6 +192,22 @@ double gw_layer_sample_porosity(const gw_layer_sample *s)
     return layer_sample_porosity_of(s);
 }
 
+int layer_sample_window_empty(const gw_layer_sample *s)
+{
+    if (!s || s->n < 0 || (s->n > 0 && (!s->x || !s->y || !s->r)))
+        return 0;
+    double h = 0;
+    for (int i = 0; i < s->n; i++)
+        h = fmax(h, s->y[i] + s->r[i]);
+    const double x0 = 0.1 * s->width, x1 = 0.9 * s->width, y0 = 0.1 * h, y1 = 0.8 * h;
+    if (!(x1 > x0) || !(y1 > y0))
+        return 0;
+    for (int i = 0; i < s->n; i++) /* as layer_sample_porosity_of picks the discs */
+        if (s->x[i] + s->r[i] > x0 && s->x[i] - s->r[i] < x1 && s->y[i] + s->r[i] > y0 && s->y[i] - s->r[i] < y1)
+            return 0;
+    return 1;
+}
+
 double layer_sample_porosity_of(const gw_layer_sample *s)
 {
     if (!s || s->n < 0 || (s->n > 0 && (!s->x || !s->y || !s->r)))
@@ -223,9 +239,12 @@ double layer_sample_porosity_of(const gw_layer_sample *s)
             rmax = fmax(rmax, ri);
         }
     }
+    /* no disc reaches into the window (layer-make --n 1: the disc off the
+     * window's middle 80 % of the width): nothing measured, NaN (it read 1,
+     * a pile of nothing, in --json, the text and the sample's header) */
     if (m == 0) {
         free(in), free(c);
-        return 1;
+        return NAN;
     }
     layer_grid g;
     int rc = layer_grid_build(&g, m, c, c + 1, 2, 2 * rmax);

@@ -87,6 +87,14 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
         if (rc != GW_OK)
             return rc;
     }
+    if (r && r->n_discs > 0 && isnan(r->porosity)) { /* the window held no disc (layer_sample_porosity_of) */
+        int rc = gw_warnings_add(list,
+                                 "the porosity is not measured (null): its window, x in [0.1, 0.9] W and y in "
+                                 "[0.1, 0.8] h, holds no disc of the %d settled (raise --n for a pile that fills it)",
+                                 r->n_discs);
+        if (rc != GW_OK)
+            return rc;
+    }
     if (!r || r->converged)
         return GW_OK;
     const char *sep = out ? "; written to " : "", *path = out ? out : "", *end = out ? " with 'converged 0'" : "";

@@ -210,6 +210,8 @@ int falcon_write_report(const falcon *f, const char *path, gw_err *err)
         fprintf(fp, "Solver: rk4, events as roots, dt = T_c/%g (T_c = (m/k)^(2/5) v_imp^(-1/5)),\n"
                     "chosen for F_max and tau_N within %.1e relative (measured convergence study).\n",
                 (double)f->o.steps_per_tc, f->o.accuracy);
+    else if (f->c.run.solver == gw_solver_rk4 || strcmp(f->c.solver, "rk4") == 0) /* no error test: no tolerance */
+        fprintf(fp, "Solver: rk4, fixed step (no error test; each collision's dt in falcon_runs.csv).\n");
     else
         fprintf(fp, "Solver: %s (%s), rtol %.1e, atol %.1e.\n", f->c.solver, f->c.method,
                 f->c.run.sp.rtol, f->c.run.sp.atol);

@@ -279,8 +279,12 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddStringToObject(s, "name", c->solver);
     cJSON_AddStringToObject(s, "method", gw_solver_method_used(c->run.solver ? c->run.solver : gw_solver_cvode,
                                                                c->run.sp.method));
-    cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
-    cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
+    /* rk4 has no error test: its run used no tolerance (null, as the library's
+     * run_rtol is NaN under rk4); falcon's --accuracy ran rk4 while the rows
+     * held cvode's 1e-12, which the settings recorded as run */
+    const int rk4 = c->run.solver == gw_solver_rk4 || (c->solver && strcmp(c->solver, "rk4") == 0);
+    cJSON_AddNumberToObject(s, "rtol", rk4 ? NAN : c->run.sp.rtol);
+    cJSON_AddNumberToObject(s, "atol", rk4 ? NAN : c->run.sp.atol);
     cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
     /* the --dt given (0: none): a run's settings replace dt by the step it took
      * (chain_cli_settings_run, _runs), which a dt above dt-max (or rk4's dt-out)

@@ -265,8 +265,11 @@ int gw_cmd_layer_make(int argc, char **argv)
         code = gw_cli_json_stdout("layer-make", j);
         cJSON_Delete(j);
     } else {
-        printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
-               gw_version(), s.n, r.porosity, h, h / mp.rm);
+        char por[48] = "porosity not measured (no disc in its window)"; /* NaN: a warning says why */
+        if (!isnan(r.porosity))
+            snprintf(por, sizeof por, "porosity %.4f", r.porosity);
+        printf("granwave %s layer-make: %d particles, %s, height %.3f m (%.2f R_m)\n", gw_version(), s.n, por, h,
+               h / mp.rm);
         if (mp.clumps)
             printf("  type B: %d rigid clumps of %d discs, aspect ratio in [1, %g], clump mass %s\n", r.n_bodies,
                    s.n, mp.aspect_max, gw_layer_clump_mass_name(m.lp.clump_mass));

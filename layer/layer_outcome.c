@@ -52,6 +52,7 @@ void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching)
     o->contact = touching;
     o->verdict = -1;
     o->t_verdict = o->t_f = NAN;
+    o->t_touch = touching ? 0 : NAN;
 }
 
 void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
@@ -69,6 +70,8 @@ void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
     }
     if (ev->kind == GW_LAYER_BLOCK_TOUCH) {
         o->contact = ev->dir > 0;
+        if (ev->dir > 0 && isnan(o->t_touch))
+            o->t_touch = ev->t;
         if (ev->dir < 0 && o->verdict < 0 && ev->vy > 0) {
             o->verdict = 1;
             o->t_verdict = ev->t;

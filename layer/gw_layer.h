@@ -758,8 +758,9 @@ typedef struct gw_layer_impact_result {
                                   records no settling) */
     double slump_ke;        /* with a side wall taken away (side_walls other than both):
                                the pile's kinetic energy when the block first touches
-                               it, J, read at the last output sample at or before the
-                               touch (the pile slumping on its open side meanwhile);
+                               it, J, read at the touch event (the located root, or
+                               the DEM step it falls in; the pile slumping on its open
+                               side meanwhile; any dt_out the same);
                                NaN with both side walls, or when the block touched
                                nothing. Above GW_LAYER_SLUMP_WARN of e_incident the
                                result warns (gw_layer_impact_result_warnings) */
@@ -774,8 +775,9 @@ typedef struct gw_layer_impact_result {
  * and by then a block of R_m meets at most 1.5e-3 of its energy in the
  * slump (at V_i 1 to 200 m/s), a block of 0.1 R_m up to 0.15;
  * `layer-make --n 20 --width-rm 8` without its left wall at --rb-rm 0.02
- * --vi 5 --gap 2.4e-3: 0.578 J at the touch against 4.4 J, 0.13. At the
- * default gap the touch is at 5e-8 s, the slump 0. */
+ * --vi 5 --gap 2.4e-3: 0.626 J at the touch against 4.4 J, 0.14. At the
+ * default gap the touch comes at once, the slump next to nothing (8.2e-6 J
+ * at 2e-7 s on that pile). */
 #define GW_LAYER_SLUMP_WARN 0.1
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);

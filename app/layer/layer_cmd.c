@@ -333,6 +333,8 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "penetration_rm", r->penetration / c->rm);
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
     cJSON_AddNumberToObject(o, "e_incident", r->e_incident);
+    if (c->ip.side_walls != GW_LAYER_SIDES_BOTH) /* only then: every other run's JSON unchanged */
+        cJSON_AddNumberToObject(o, "slump_ke", r->slump_ke);
     cJSON_AddNumberToObject(o, "dissipated_first_contact", r->dissipated_first_contact);
     cJSON_AddNumberToObject(o, "block_loss_first_contact", r->block_loss_first_contact);
     cJSON_AddNumberToObject(o, "dissipated_first_contact_block", r->dissipated_first_contact_block);

@@ -353,8 +353,9 @@ static int xcorr_locked_at(const gw_layer_impact_result *r, double dt, double *d
     if (!(c > 0) || !(dc > 0))
         return 0;
     /* a speed the resolution rule nulls already is not locked but unresolved
-     * (no warning: a 60-disc pile's default impact, null before, was warned
-     * of as locked at 17.55 m/s) */
+     * (not warned of as locked: a 60-disc pile's default impact, null before,
+     * was warned of as locked at 17.55 m/s; its scatter is said instead,
+     * layer_crowns_imprecise) */
     double cr = c, crerr = cerr;
     resolved_at(r, dt, &cr, &crerr);
     if (isnan(cr))

@@ -757,7 +757,29 @@ typedef struct gw_layer_impact_result {
     double settled_load_ratio; /* q of gw_layer_settled_load_ratio for the sample under the
                                   impact's material (1: at rest as settled; NaN: the sample
                                   records no settling) */
+    double slump_ke;        /* with a side wall taken away (side_walls other than both):
+                               the pile's kinetic energy when the block first touches
+                               it, J, read at the touch event (the located root, or
+                               the DEM step it falls in; the pile slumping on its open
+                               side meanwhile; any dt_out the same);
+                               NaN with both side walls, or when the block touched
+                               nothing. Above GW_LAYER_SLUMP_WARN of e_incident the
+                               result warns (gw_layer_impact_result_warnings) */
 } gw_layer_impact_result;
+
+/* The share of the impact's energy (e_incident) the pile's slump may reach,
+ * as kinetic energy before the block arrives, with a side wall taken away,
+ * before the result warns that the block hits a pile already in motion
+ * (gw_layer_impact_result.slump_ke). Measured (session 46) on the 27 piles of
+ * 47 that run without their more loaded wall: the fall rule (the block at most 0.1 %
+ * faster at the touch) lets it arrive by t = 1.0e-4 V_i s at the latest,
+ * and by then a block of R_m meets at most 1.5e-3 of its energy in the
+ * slump (at V_i 1 to 200 m/s), a block of 0.1 R_m up to 0.15;
+ * `layer-make --n 20 --width-rm 8` without its left wall at --rb-rm 0.02
+ * --vi 5 --gap 2.4e-3: 0.626 J at the touch against 4.4 J, 0.14. At the
+ * default gap the touch comes at once, the slump next to nothing (8.2e-6 J
+ * at 2e-7 s on that pile). */
+#define GW_LAYER_SLUMP_WARN 0.1
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
 

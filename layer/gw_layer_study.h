@@ -111,7 +111,19 @@ typedef struct gw_layer_impact_outcome {
     double *particle_r;    /* [nparticles] radius, m */
     char *sample_fnv1a64;  /* the sample's content hash (gw_layer_sample.content_hash)
                               as 16 hex digits, owned */
+    int crowns_nulled;     /* the rules that nulled a crown speed, each said by a
+                              warning: GW_LAYER_NULLED_* bits (0: none) */
 } gw_layer_impact_outcome;
+
+/* gw_layer_impact_outcome.crowns_nulled: a crown speed (wave_speed,
+ * wave_speed_kinetic, wave_speed_xcorr) left null by the sampling (--dt-out
+ * too coarse, or the first impact sampled under 4 times), by the run's end
+ * before the wave reached 3 rings, as following the pile's slow motion
+ * (locked), or by its scatter (standard error at or above half the speed). */
+#define GW_LAYER_NULLED_SAMPLING 1
+#define GW_LAYER_NULLED_CUT 2
+#define GW_LAYER_NULLED_LOCKED 4
+#define GW_LAYER_NULLED_SCATTER 8
 
 /* The table of gw_layer_impact_outcome's results. */
 const gw_param *gw_layer_impact_outcome_fields(void);

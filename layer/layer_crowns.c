@@ -353,8 +353,9 @@ static int xcorr_locked_at(const gw_layer_impact_result *r, double dt, double *d
     if (!(c > 0) || !(dc > 0))
         return 0;
     /* a speed the resolution rule nulls already is not locked but unresolved
-     * (no warning: a 60-disc pile's default impact, null before, was warned
-     * of as locked at 17.55 m/s) */
+     * (not warned of as locked: a 60-disc pile's default impact, null before,
+     * was warned of as locked at 17.55 m/s; its scatter is said instead,
+     * layer_crowns_imprecise) */
     double cr = c, crerr = cerr;
     resolved_at(r, dt, &cr, &crerr);
     if (isnan(cr))
@@ -412,6 +413,39 @@ unsigned layer_crowns_peaks_locked(const gw_layer_impact_result *r, double c[2],
 {
     c[0] = c[1] = *ref = NAN;
     return r && r->peak_strain_t && r->nrings >= 3 ? peaks_locked_at(r, crowns_dt(r), c, ref) : 0;
+}
+
+/* Bits 1, 2, 4 (strain peaks, kinetic peaks, cross-correlation) of the
+ * speeds the resolution rule nulled for their scatter alone: read positive
+ * and resolved by the sampling (d_c / c >= 2 dt at the interval the crowns
+ * were read from) but with a standard error at or above half the speed; the
+ * speeds and errors as read into c[3], err[3] (NaN for the others). The
+ * default impact on the 40-disc pile of `layer-make --n 40` read its
+ * cross-correlation speed from 10 ring pairs and nulled it so, with no
+ * warning (issue 18 class 6: an undecided value is null with a warning). */
+unsigned layer_crowns_imprecise(const gw_layer_impact_result *r, double c[3], double err[3])
+{
+    for (int q = 0; q < 3; q++)
+        c[q] = err[q] = NAN;
+    if (!r || r->nrings < 3 || !r->ring_r || !r->peak_strain_t || !r->peak_kin_t)
+        return 0;
+    const double dt = crowns_dt(r), dc = r->ring_r[1] - r->ring_r[0];
+    const double now[3] = {r->wave_speed, r->wave_speed_kin, r->wave_speed_xcorr};
+    double v[3] = {NAN, NAN, NAN}, e[3] = {NAN, NAN, NAN};
+    int m;
+    fit(r, r->peak_strain_t, &v[0], &e[0], &m);
+    fit(r, r->peak_kin_t, &v[1], &e[1], &m);
+    if (r->xcorr_delay) {
+        double *slow = malloc((size_t)r->nrings * sizeof *slow);
+        if (slow)
+            pair_speed_of(r, slow, &v[2], &e[2], &m);
+        free(slow);
+    }
+    unsigned which = 0;
+    for (int q = 0; q < 3; q++)
+        if (isnan(now[q]) && v[q] > 0 && dc / v[q] >= 2 * dt && !(e[q] < 0.5 * v[q]))
+            which |= 1u << q, c[q] = v[q], err[q] = e[q];
+    return which;
 }
 
 /* 1 when the arrivals tp of rings 1 .. nrings - 1 (3 or more) show a wave

@@ -1337,6 +1337,11 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
      * yb it held the gap (--gap 0.04 at 20 m/s: 0.0571 m against 0.0171 at
      * the default 1e-6 m on a 40-disc sample) */
     layer_outcome_finish(&oc, yb - ip->gap, ip->vi, res->t_end, cut && !layer_outcome_done(&oc), res);
+    /* A pile without one of its side walls slumps from t = 0 on its open
+     * side (every pile does some: layer_side_walls_rest_check); its kinetic
+     * energy when the block arrives is read at the touch event, whatever
+     * dt-out (GW_LAYER_SLUMP_WARN, gw_layer.h, gives the measurements). */
+    res->slump_ke = !ip->remove_walls && ip->side_walls != GW_LAYER_SIDES_BOTH ? oc.touch_ke : NAN;
     /* The first-contact values are frozen at the verdict (layer_outcome.c):
      * read up to the end of the run, they depended on where it stopped, the
      * first sample after the verdict. A block that did not bounce and still

@@ -52,6 +52,21 @@ void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching)
     o->contact = touching;
     o->verdict = -1;
     o->t_verdict = o->t_f = NAN;
+    o->t_touch = o->touch_ke = touching ? 0 : NAN;
+}
+
+/* The kinetic energy of every body but the block in L's state (the ledger's
+ * kinetic_soil), J. */
+static double soil_kinetic(const gw_layer *L)
+{
+    double ke = 0;
+    for (int b = 0; b < L->nb; b++) {
+        if (b == L->block_body)
+            continue;
+        const double *s = L->y + 6 * b;
+        ke += 0.5 * L->m[b] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[b] * s[5] * s[5];
+    }
+    return ke;
 }
 
 void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
@@ -69,6 +84,10 @@ void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
     }
     if (ev->kind == GW_LAYER_BLOCK_TOUCH) {
         o->contact = ev->dir > 0;
+        if (ev->dir > 0 && isnan(o->t_touch)) {
+            o->t_touch = ev->t;
+            o->touch_ke = soil_kinetic(o->L);
+        }
         if (ev->dir < 0 && o->verdict < 0 && ev->vy > 0) {
             o->verdict = 1;
             o->t_verdict = ev->t;

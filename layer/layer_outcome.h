@@ -21,6 +21,11 @@ typedef struct layer_outcome {
     int tf;               /* T_f reached: v_y back to zero after the bounce */
     double t_f;
     gw_layer_block_extremes at_end; /* extremes at T_f or at the no-bounce decision */
+    double t_touch;       /* the block's first touch of a particle or a wall, s (NaN:
+                             none yet; 0 when it touches at the start) */
+    double touch_ke;      /* the other bodies' kinetic energy then, J (the state the
+                             touch event is dispatched at: the located root, or the
+                             DEM step end; 0 at the start; NaN: no touch yet) */
 } layer_outcome;
 
 /* Start tracking on layer L (block set, before gw_layer_start). The block

@@ -49,6 +49,16 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
  * the program's text says "unresolved" of a speed the sampling left null. */
 unsigned layer_crowns_locked(const gw_layer_impact_result *res);
 
+/* layer_crowns_warning, and into *kinds (NULL: not asked; 0 when it added no
+ * line) the rules whose lines it added: GW_LAYER_NULLED_* (gw_layer_study.h) */
+int layer_crowns_warning_kinds(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
+                               const gw_layer_impact_result *res, char **list, int *kinds);
+/* Bits 1, 2, 4 (strain, kinetic, cross-correlation) of the speeds nulled by
+ * the resolution rule's error bound alone (standard error at or above half
+ * the speed, the sampling resolving it), their values read into c[3] and
+ * err[3]: layer_crowns_warning says so (layer_crowns.c). */
+unsigned layer_crowns_imprecise(const gw_layer_impact_result *r, double c[3], double err[3]);
+
 /* A warning into *list when res's energy error is above GW_LAYER_ENERGY_WARN
  * while ip's energy_tol is off (0), naming it and the solver's rtol and atol
  * (rk4, verlet: the step), as the chain's (chain_energy_warning): layer-impact

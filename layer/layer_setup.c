@@ -143,6 +143,7 @@ static const gw_param outcome_fields[] = {
     RD("penetration_rm", penetration_rm, "", "penetration in R_m"),
     RD("energy_error", r.energy_error, "", "max ledger closure |sum - A| / A over the run"),
     RD("e_incident", r.e_incident, "J", "(1/2) M V_i^2"),
+    RD("slump_ke", r.slump_ke, "J", "with a side wall taken away, the pile's kinetic energy at the block's first touch (NaN: both walls, or no touch)"),
     RD("dissipated_first_contact", r.dissipated_first_contact, "", "E_d / E_incident at the end of the first contact"),
     RD("block_loss_first_contact", r.block_loss_first_contact, "", "block kinetic energy lost in the first contact / E_incident"),
     RD("dissipated_first_contact_block", r.dissipated_first_contact_block, "", "the part of it at the block's contacts"),
@@ -214,6 +215,7 @@ static const gw_param outcome_fields[] = {
     RA("spec_kinetic", r.spec_kin, "J^2/Hz", "spec_len", "nrings", NULL, "one-sided PSD of each ring's kinetic energy"),
     {.name = "sample_fnv1a64", .type = GW_PARAM_TEXT, .offset = OFF(sample_fnv1a64), .unit = "",
      .help = "FNV-1a 64 hash of the sample file's bytes, 16 hex digits: the content the run read"},
+    RI("crowns_nulled", crowns_nulled, "rules that nulled a crown speed, each warned of: 1 the sampling, 2 the run's end before 3 rings, 4 the pile's slow motion (locked), 8 the scatter (0: none)"),
     /* snapshots (off unless the setup's snapshots asks) */
     RI("nsnap", nsnap, "snapshots taken"),
     RI("nparticles", nparticles, "particles per snapshot (the discs, then the block)"),
@@ -710,7 +712,9 @@ static int crowns_cut_warning(const gw_layer_impact_params *ip, const gw_layer_i
         return GW_OK; /* the first impact ran to its end (not the run's end), or the rings were reached */
     double dt, dc;
     int few;
-    const unsigned warned = layer_crowns_undersampled(r, &dt, &dc, &few) | layer_crowns_locked(r);
+    double cs[3], es[3];
+    const unsigned warned = layer_crowns_undersampled(r, &dt, &dc, &few) | layer_crowns_locked(r) |
+                            layer_crowns_imprecise(r, cs, es);
     static const char *const name[3] = {"wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"};
     const double v[3] = {r->wave_speed, r->wave_speed_kin, r->wave_speed_xcorr};
     char names[96] = "";
@@ -735,6 +739,34 @@ static int crowns_cut_warning(const gw_layer_impact_params *ip, const gw_layer_i
                                                                         : "raise --t-max");
 }
 
+/* The speeds the resolution rule nulled for their scatter alone
+ * (layer_crowns_imprecise: the sampling resolves them, their standard error
+ * is at or above half the speed), not named by the sampling's warning: the
+ * default impact on the 40-disc pile of `layer-make --n 40` gave
+ * wave_speed_xcorr null and "warnings": [] (issue 18 class 6). One line,
+ * each speed with its value and its error. */
+static int crowns_scatter_warning(const gw_layer_impact_result *r, char **list)
+{
+    double dt, dc, c[3], e[3];
+    int few;
+    const unsigned which = layer_crowns_imprecise(r, c, e) & ~layer_crowns_undersampled(r, &dt, &dc, &few);
+    if (!which)
+        return GW_OK;
+    static const char *const name[3] = {"wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"};
+    char read[240] = "", names[96] = "";
+    for (int k = 0, n = 0; k < 3; k++)
+        if (which & (1u << k)) {
+            const size_t at = strlen(read);
+            gw_snprintf(read + at, sizeof read - at, "%s%s %.4g +- %.3g m/s", n ? ", " : "", name[k], c[k], e[k]);
+            strcat(names, n ? ", " : "");
+            strcat(names, name[k]);
+            n++;
+        }
+    return gw_warnings_add(list, "crowns: %s: a standard error at or above half the speed, so %s %s null "
+                           "(undecided: the rings' arrivals scatter too much to fit a speed)", read, names,
+                           (which & (which - 1)) ? "are" : "is");
+}
+
 /* The crowns as set against the sample: the wave speeds fit the peak times
  * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
  * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),
@@ -744,8 +776,44 @@ static int crowns_cut_warning(const gw_layer_impact_params *ip, const gw_layer_i
  * crowns sum lie between centres); the run itself is unchanged. The default
  * width (2 R_m) is not judged: on a pile too small for 3 rings (60 discs,
  * 14 R_m wide: 2) the speeds' "unresolved" is the pile's size, not a flag's. */
+static int crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
+                          const gw_layer_impact_result *r, char **list, int *cut);
+
+/* The lines of *list from byte at on: 1 when a rule added one */
+static int added(char *const *list, size_t at)
+{
+    return *list && strlen(*list) > at;
+}
+
+int layer_crowns_warning_kinds(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
+                               const gw_layer_impact_result *r, char **list, int *kinds)
+{
+    if (kinds)
+        *kinds = 0;
+    const size_t at = *list ? strlen(*list) : 0;
+    int cut = 0;
+    int rc = crowns_warning(smp, ip, r, list, &cut);
+    if (rc != GW_OK || !kinds || !added(list, at))
+        return rc;
+    /* which rules said them: each rule's line starts as its own */
+    double dt, dc, c[3], e[3];
+    int few;
+    const unsigned under = layer_crowns_undersampled(r, &dt, &dc, &few);
+    *kinds = (under ? GW_LAYER_NULLED_SAMPLING : 0) | (layer_crowns_locked(r) ? GW_LAYER_NULLED_LOCKED : 0) |
+             ((layer_crowns_imprecise(r, c, e) & ~under) ? GW_LAYER_NULLED_SCATTER : 0);
+    if (cut)
+        *kinds |= GW_LAYER_NULLED_CUT;
+    return rc;
+}
+
 int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
                          const gw_layer_impact_result *r, char **list)
+{
+    return layer_crowns_warning_kinds(smp, ip, r, list, NULL);
+}
+
+static int crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
+                          const gw_layer_impact_result *r, char **list, int *cut)
 {
     int rc = crowns_sampling_warning(ip, r, list);
     if (rc != GW_OK)
@@ -781,6 +849,8 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
                                   : peaks & 1u ? "wave_speed is" : "wave_speed_kinetic is")) != GW_OK)
             return rc;
     }
+    if ((rc = crowns_scatter_warning(r, list)) != GW_OK)
+        return rc;
     const double w = ip->ring_width > 0 ? ip->ring_width : 2 * smp->rm;
     if (ip->nrings < 4)
         return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "
@@ -794,8 +864,12 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
         }
         held += any;
     }
-    if (held >= 3)
-        return crowns_cut_warning(ip, r, list);
+    if (held >= 3) {
+        const size_t at = *list ? strlen(*list) : 0;
+        rc = crowns_cut_warning(ip, r, list);
+        *cut = rc == GW_OK && added(list, at);
+        return rc;
+    }
     if (!(ip->ring_width > 0))
         return GW_OK;
     return gw_warnings_add(list, "ring-width: crowns %g m wide around the impact point hold particle centres in %d "
@@ -887,7 +961,8 @@ static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, v
         else if (nu > 0 && rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
         if (rc == GW_OK && ((rc = gw_layer_impact_result_warnings(&out->r, &out->warnings)) != GW_OK ||
-                            (rc = layer_crowns_warning(&smp, &ip, &out->r, &out->warnings)) != GW_OK ||
+                            (rc = layer_crowns_warning_kinds(&smp, &ip, &out->r, &out->warnings, &out->crowns_nulled)) !=
+                                GW_OK ||
                             (rc = layer_energy_warning(&out->r, &ip, type, &sp, &out->warnings)) != GW_OK))
             rc = gw_err_set(err, rc, "layer-impact: out of memory");
     }

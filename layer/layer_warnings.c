@@ -212,6 +212,15 @@ int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list
     int rc = r->settling[0] ? gw_warnings_add(list, "%.*s", (int)sizeof r->settling, r->settling) : GW_OK;
     /* a block that left the layer for good (layer_outcome.c): decided, its own
      * verdict; never "raise --t-max" (it ran to t-max before, falling on) */
+    /* a pile slumping on the side whose wall was taken away, its kinetic
+     * energy at the block's touch a large share of the impact's
+     * (gw_layer_impact_result.slump_ke; 0 in a result filled by hand) */
+    if (rc == GW_OK && r->slump_ke > GW_LAYER_SLUMP_WARN * r->e_incident)
+        rc = gw_warnings_add(list, "the pile was slumping when the block arrived: with a side wall taken away its "
+                             "kinetic energy at the block's touch was %.3g J, %.3g of the impact's %.3g J (above "
+                             "%g): the block hit a pile in motion, not at rest (keep both side walls, or give a "
+                             "shorter gap, a faster or a larger block)", r->slump_ke, r->slump_ke / r->e_incident, r->e_incident,
+                             GW_LAYER_SLUMP_WARN);
     if (rc == GW_OK && r->fell_off > 0)
         rc = gw_warnings_add(list, "the block fell off the layer (%s, no wall there, beyond every other body and "
                              "touching none of them): bounced false, no rebound; the run ended at t = %.6g s",

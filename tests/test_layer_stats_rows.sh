@@ -181,8 +181,9 @@ PY
 refused "e_n_first removed, e_first kept" nofirst.csv "nofirst\.csv: the header has 2 of the columns e_n_first, e_first, alpha_r_first"
 # 15 CR LF line ends: the same statistics
 sed 's/$/\r/' "$T" >crlf.csv
-timeout 60 "$GW" layer-stats "$T" --json 2>/dev/null | grep -v '"input\|"command' >lf.json
-timeout 60 "$GW" layer-stats crlf.csv --json 2>/dev/null | grep -v '"input\|"command' >crlf.json
+# (the sweep's warnings, which layer-stats says naming the table: the name set apart)
+timeout 60 "$GW" layer-stats "$T" --json 2>/dev/null | grep -v '"input\|"command' | sed "s#$T: #TABLE: #g" >lf.json
+timeout 60 "$GW" layer-stats crlf.csv --json 2>/dev/null | grep -v '"input\|"command' | sed "s#crlf\.csv: #TABLE: #g" >crlf.json
 [ -s lf.json ] && cmp -s lf.json crlf.json && ok "CR LF line ends: the same statistics" || ko "CR LF: $(diff lf.json crlf.json | head -3)"
 # 16 a duplicated header column, 17 a units line after the header: refused
 sed '/^case,/s/,e_first,/,e_n,/' "$T" >dup.csv

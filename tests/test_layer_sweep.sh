@@ -37,7 +37,7 @@ $PY - "$tmp/ref/results.csv" "$tmp/S.txt" <<'PY' && ok "table: header, 6 rows, x
 import csv, math, sys
 cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
         "block_loss_first_contact,energy_error,wave_speed,t_end,steps,e_n_first,e_first,alpha_r_first,"
-        "v_nr_first,v_r_first,t_leave,t_rebound,t_f,settled_load_ratio,settling_warning,fell_off").split(",")
+        "v_nr_first,v_r_first,t_leave,t_rebound,t_f,settled_load_ratio,settling_warning,fell_off,slump_ke,crowns_nulled").split(",")
 lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
 head = lines[0].strip().split(",")
 bad = []

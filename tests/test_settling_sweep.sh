@@ -45,10 +45,11 @@ cols() { # TABLE WANT_FLAG WANT_Q: every row's settling_warning and settled_load
 import csv, math, sys
 lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
 head = lines[0].strip().split(",")
-want = ["t_f", "settled_load_ratio", "settling_warning", "fell_off", "case_config_fnv1a64"]
+want = ["t_f", "settled_load_ratio", "settling_warning", "fell_off", "slump_ke", "crowns_nulled",
+        "case_config_fnv1a64"]
 i = head.index("t_f") if "t_f" in head else -1
-if i < 0 or head[i:i + 5] != want:
-    print("header %s" % head[i:i + 5])
+if i < 0 or head[i:i + 7] != want:
+    print("header %s" % head[i:i + 7])
     sys.exit(1)
 rows = list(csv.DictReader(lines))
 flag, q = float(sys.argv[2]), float(sys.argv[3])

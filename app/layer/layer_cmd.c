@@ -336,6 +336,8 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "penetration_rm", r->penetration / c->rm);
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
     cJSON_AddNumberToObject(o, "e_incident", r->e_incident);
+    if (c->ip.side_walls != GW_LAYER_SIDES_BOTH) /* only then: every other run's JSON unchanged */
+        cJSON_AddNumberToObject(o, "slump_ke", r->slump_ke);
     cJSON_AddNumberToObject(o, "dissipated_first_contact", r->dissipated_first_contact);
     cJSON_AddNumberToObject(o, "block_loss_first_contact", r->block_loss_first_contact);
     cJSON_AddNumberToObject(o, "dissipated_first_contact_block", r->dissipated_first_contact_block);
@@ -827,13 +829,15 @@ int gw_cmd_layer_impact(int argc, char **argv)
             char ws[3][64];
             const double wv[3] = {r.wave_speed, r.wave_speed_kin, r.wave_speed_xcorr};
             const double we[3] = {r.wave_speed_err, r.wave_speed_kin_err, r.wave_speed_xcorr_err};
-            const unsigned locked = layer_crowns_locked(&r);
+            double cs[3], es[3];
+            const unsigned locked = layer_crowns_locked(&r), scatter = layer_crowns_imprecise(&r, cs, es);
             for (int q = 0; q < 3; q++)
                 if (isfinite(wv[q]))
                     snprintf(ws[q], sizeof ws[q], "%.4g +- %.3g m/s", wv[q], we[q]);
                 else
-                    snprintf(ws[q], sizeof ws[q], "%s", locked & (1u << q) ? "undecided, the pile's motion"
-                                                                           : "unresolved");
+                    snprintf(ws[q], sizeof ws[q], "%s", locked & (1u << q)    ? "undecided, the pile's motion"
+                                                        : scatter & (1u << q) ? "undecided, its scatter"
+                                                                              : "unresolved");
             printf("  wave speed %s (strain peaks, %d rings), %s (kinetic)\n", ws[0], r.wave_rings, ws[1]);
             printf("  wave speed %s (cross-correlation of neighbouring rings, %d pairs)\n", ws[2], r.xcorr_gaps);
             printf("  energy closure max %.3g; t_end %.4g ms; wall %.0f ms, %ld steps, %ld events, %ld rebuilds\n",

@@ -340,7 +340,8 @@ static int nonnegative(const char *col)
                                         "penetration_rm", "energy_error",
                                         "t_end", "steps", "e_n_first", "e_first", "alpha_r_first",
                                         "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
-                                        "settled_load_ratio", "settling_warning", "fell_off"};
+                                        "settled_load_ratio", "settling_warning", "fell_off", "slump_ke",
+                                        "crowns_nulled"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(col, names[k]) == 0)
             return 1;
@@ -459,6 +460,10 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
                                     strcmp(t->col_name[i], "fell_off") == 0))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not 0 or 1", t->path, ln,
                               t->col_name[i], c);
+        /* the rules' bits a sweep writes (GW_LAYER_NULLED_*: 0 to 15, never nan) */
+        if (strcmp(t->col_name[i], "crowns_nulled") == 0 && !(v >= 0 && v <= 15 && v == floor(v)))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column crowns_nulled: '%s' is not an integer in [0, 15]",
+                              t->path, ln, c);
         /* a sweep writes finite numbers or nan, and these columns are never
          * negative: e_n = -3 or 1e300... entered the means silently. One
          * exception: settled_load_ratio is q = W_settled / W_impact, +inf for a

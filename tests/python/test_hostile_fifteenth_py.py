@@ -131,7 +131,11 @@ def test_decided_runs_do_not_warn(tmp_path):
                    (granwave.layer_make, dict(n=60, width_rm=16, seed=3, out="s.txt")),
                    (granwave.layer_impact, dict(sample="s.txt")), (granwave.layer_stats, dict(input=WALLS))):
         _, got = _python_warnings(fn, **kw)
-        assert not got, (fn.__name__, [str(x.message) for x in got])
+        texts = [str(x.message) for x in got]
+        if fn is granwave.layer_impact:  # its cross-correlation speed is undecided (its scatter): said (session 46)
+            assert len(texts) == 1 and "wave_speed_xcorr 17.55 +- 13.3 m/s: a standard error" in texts[0], texts
+            continue
+        assert not got, (fn.__name__, texts)
 
 
 def test_warning_is_a_runtime_warning_and_can_be_an_error():

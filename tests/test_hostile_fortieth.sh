@@ -142,7 +142,9 @@ py_checks 2 <<'PYEOF'
 warned("Python layer_impact(ring_width=1e6)", "ring_width: crowns 1e+06 m wide", granwave.layer_impact,
        sample="s4.txt", t_max=0.002, ring_width=1e6)
 r, ws = caught(granwave.layer_impact, sample="s4.txt", t_max=0.002)
-check(not [w for w in ws if "crowns" in w], "Python layer_impact, the default crowns: none")
+# (the crowns' rings and width only: since session 46 a run cut at 2 ms says its speeds were cut)
+check(not [w for w in ws if str(w).split(":")[0] in ("ring_width", "ring-width", "rings")],
+      "Python layer_impact, the default crowns: none")
 PYEOF
 
 # --- 5 the content hash: the bytes parsed (controls) ---

@@ -1475,16 +1475,25 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
     return plan_make(p0, o, pl, 1, err);
 }
 
-double chain_collide_held_t(const gw_chain_params *p0, const gw_chain_run_opts *o)
+/* plan_make's values for chain_held_check: bead 1's wall contact, the
+ * sampling and the collision's length, at the column's speed scale */
+static double held_values(const gw_chain_params *p0, const gw_chain_run_opts *o, double *tau1, double *dt_out)
 {
-    /* plan_make's values for chain_held_check, which refuses t_max above
-     * HELD_WORK_MAX / n times the sampling (exactly, not rounded) */
     gw_chain_params q = *p0;
     q.v_imp = chain_speed_scale(p0);
-    const double m0 = q.masses ? q.masses[0] : q.mass, tau1 = gw_chain_tau1(m0, q.kwall, q.v_imp);
-    const double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
+    const double m0 = q.masses ? q.masses[0] : q.mass;
+    *tau1 = gw_chain_tau1(m0, q.kwall, q.v_imp);
+    *dt_out = o->dt_out > 0 ? o->dt_out : *tau1 / 200.0;
     double tc = 0;
-    const double t_col = chain_collision_length(&q, &tc);
+    return chain_collision_length(&q, &tc);
+}
+
+double chain_collide_held_t(const gw_chain_params *p0, const gw_chain_run_opts *o)
+{
+    /* chain_held_check refuses t_max above HELD_WORK_MAX / n times the
+     * sampling (exactly, not rounded) */
+    double tau1, dt_out;
+    const double t_col = held_values(p0, o, &tau1, &dt_out);
     if (!isfinite(held_t_lim(p0, t_col, tau1, dt_out)))
         return INFINITY;
     return HELD_WORK_MAX / p0->n * fmin(dt_out, tau1 / 200.0);
@@ -1492,12 +1501,8 @@ double chain_collide_held_t(const gw_chain_params *p0, const gw_chain_run_opts *
 
 int chain_collide_held_refuse(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err)
 {
-    gw_chain_params q = *p0;
-    q.v_imp = chain_speed_scale(p0);
-    const double m0 = q.masses ? q.masses[0] : q.mass, tau1 = gw_chain_tau1(m0, q.kwall, q.v_imp);
-    const double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
-    double tc = 0;
-    const double t_col = chain_collision_length(&q, &tc);
+    double tau1, dt_out;
+    const double t_col = held_values(p0, o, &tau1, &dt_out);
     return chain_held_check(p0, o->t_max, t_col, tau1, dt_out, err);
 }
 

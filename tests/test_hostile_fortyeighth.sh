@@ -66,13 +66,15 @@ speeds() {
 
 impact d0
 read -r s0 k0 x0 n0 w0 <<<"$(speeds d0)"
-[ $rc -eq 0 ] && [ "$s0" != null ] && [ "$k0" != null ] && [ "$n0" = - ] && [ ! -s d0.err ] &&
+# (stderr without a dt-out line: since session 46 a cross-correlation nulled for
+# its scatter is warned of, on this pile's default impact too)
+[ $rc -eq 0 ] && [ "$s0" != null ] && [ "$k0" != null ] && [ "$n0" = - ] && ! grep -q "dt-out" d0.err &&
     ok "control: the default --dt-out gives wave_speed $s0, wave_speed_kinetic $k0 m/s, no dt-out warning" ||
     ko "control: the default --dt-out: exit $rc, speeds $s0 $k0 $x0, dt-out warning [$n0], stderr $(head -c 200 d0.err)"
 
 impact d4 --dt-out 1e-4
 read -r s4 k4 x4 n4 w4 <<<"$(speeds d4)"
-[ $rc -eq 0 ] && [ "$k4" != null ] && [ "$n4" = - ] && [ ! -s d4.err ] &&
+[ $rc -eq 0 ] && [ "$k4" != null ] && [ "$n4" = - ] && ! grep -q "dt-out" d4.err &&
     ok "control: --dt-out 1e-4 resolves the speeds ($s4, $k4 m/s), no warning" ||
     ko "control: --dt-out 1e-4: exit $rc, speeds $s4 $k4, dt-out warning [$n4]"
 

@@ -52,7 +52,10 @@ fi
 for a in "" "--solver cvode" "--solver cvode --rtol 1e-4 --atol 1e-4 --energy-tol 1"; do
     # shellcheck disable=SC2086
     cpu_run 60 "$GW" layer-impact --sample pile.txt $a --quiet --json >m.json 2>"$tmp/stderr"
-    [ $? = 0 ] && [ ! -s "$tmp/stderr" ] && [ "$(jq_py m.json 'd["warnings"]')" = "[]" ] &&
+    # (no warning but the crowns' own: since session 46 this pile's cross-correlation,
+    # nulled for its scatter, is warned of)
+    [ $? = 0 ] && ! grep -v "warning: crowns: " "$tmp/stderr" | grep -q . &&
+        [ "$(jq_py m.json 'all(w.startswith("crowns: ") for w in d["warnings"])')" = True ] &&
         ok "control: layer-impact ${a:-(default)}: no warning" || ko "control: layer-impact $a: $(head -c 300 "$tmp/stderr")"
 done
 # Python: the same warning from granwave.chain and granwave.layer_impact

@@ -41,7 +41,7 @@ if runs_json "G 4e9 with --other-settling" os.json layer-impact --sample G.txt -
 fi
 settling_sweep_ini sw.ini "$tmp/G.txt" "other-settling = true"
 "$GW" sweep sw.ini --out "$tmp/sw" --quiet 2>sw.err; rc=$?
-if [ $rc -eq 0 ] && [ "$(awk -F, '/^[0-9]/ { print $(NF - 3) }' sw/results.csv | sort -u)" = 1 ]; then
+if [ $rc -eq 0 ] && [ "$(awk -F, '/^[0-9]/ { print $(NF - 5) }' sw/results.csv | sort -u)" = 1 ]; then
     ok "a layer sweep with other-settling over the G 4e9 pile runs, its rows settling_warning 1"
 else
     ko "sweep with other-settling: exit $rc, $(head -c 300 sw.err)"

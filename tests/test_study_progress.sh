@@ -246,7 +246,10 @@ ly.stop(), lyq.stop()
 print("NOTE: layer sweep (rk4 at %s s, %s): %.1f s" % (LAYER_DT, "clock shim" if SHIM else "wall's clock",
                                                      time.monotonic() - ly_t0), flush=True)
 prog = ly.progress(SWEEP)
-check(ly.p.returncode == 0 and lyq.p.returncode == 0 and len(prog) == len(ly.lines) - 2,
+# (the sweep's warning lines apart: since session 46 the crowns' speeds nulled for
+# their scatter on this pile are said in one line before the last)
+ly_said = [l for _, l in ly.lines if not l.startswith("granwave sweep: warning: ")]
+check(ly.p.returncode == 0 and lyq.p.returncode == 0 and len(prog) == len(ly_said) - 2,
       "layer sweep: exit 0 (%s, --quiet %s), the header, whole progress lines and the last line: %r"
       % (ly.p.returncode, lyq.p.returncode, [l for _, l in ly.lines]))
 first = [x for _, x in prog if x.group(1) == "0"]

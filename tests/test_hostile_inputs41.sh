@@ -117,7 +117,8 @@ refused "a table with its '# input' line given twice: refused naming the second"
 runs_json "the table as the sweep wrote it" ta.json layer-stats ta/results.csv &&
     ok "the table as the sweep wrote it is read"
 runs_json "the table without its '# input' line" noinput.json layer-stats asis_noinput.csv &&
-    cmp -s <(grep -v '"input\|"command' ta.json) <(grep -v '"input\|"command' noinput.json) &&
+    cmp -s <(grep -v '"input\|"command' ta.json | sed 's#ta/results.csv#TABLE#g') \
+        <(grep -v '"input\|"command' noinput.json | sed 's#asis_noinput.csv#TABLE#g') &&
     ok "the table without its '# input' line, its rows agreeing, is read, its statistics the same" ||
     ko "the table without its '# input' line: not read as the whole table"
 refused "a table row's penetration_rm edited by 0.1 %: refused naming the line and the R_m of the other rows" \

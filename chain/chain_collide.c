@@ -762,21 +762,26 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     return GW_DRIVE_ON;
 }
 
+/* The chain's parameters with its own per-bead masses and contact
+ * coefficients (gw_chain_create keeps them, not the caller's arrays), as the
+ * plan sees them */
+static gw_chain_params own_params(const gw_chain *c)
+{
+    gw_chain_params pc = *gw_chain_get_params(c);
+    pc.masses = c->m;
+    pc.kc = pc.n > 1 ? c->kc : NULL;
+    return pc;
+}
+
 double chain_collide_drop_held_t(const gw_chain *c, const gw_chain_run_opts *o)
 {
-    const gw_chain_params *p = gw_chain_get_params(c);
-    gw_chain_params pc = *p;
-    pc.masses = c->m;
-    pc.kc = p->n > 1 ? c->kc : NULL;
+    const gw_chain_params pc = own_params(c);
     return chain_collide_held_t(&pc, o);
 }
 
 int chain_collide_drop_held_refuse(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
 {
-    const gw_chain_params *p = gw_chain_get_params(c);
-    gw_chain_params pc = *p;
-    pc.masses = c->m;
-    pc.kc = p->n > 1 ? c->kc : NULL;
+    const gw_chain_params pc = own_params(c);
     return chain_collide_held_refuse(&pc, o, err);
 }
 
@@ -814,11 +819,7 @@ int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight
 
 int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
 {
-    /* the chain's own masses and contact coefficients, as collide_run plans */
-    const gw_chain_params *p = gw_chain_get_params(c);
-    gw_chain_params pc = *p;
-    pc.masses = c->m;
-    pc.kc = p->n > 1 ? c->kc : NULL;
+    const gw_chain_params pc = own_params(c); /* as collide_run plans */
     return chain_collide_plan_early(&pc, o, err);
 }
 
@@ -836,11 +837,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     memset(r, 0, sizeof *r);
     r->n = n;
     collide_plan pl;
-    /* the plan sees the chain's own per-bead masses and contact coefficients
-     * (gw_chain_create keeps them, not the caller's arrays) */
-    gw_chain_params pc = *p;
-    pc.masses = c->m;
-    pc.kc = n > 1 ? c->kc : NULL;
+    const gw_chain_params pc = own_params(c);
     int prc = chain_collide_plan_make(&pc, o, &pl, err);
     if (prc != GW_OK)
         return prc;

@@ -373,10 +373,12 @@ static int ark_roots(realtype t, N_Vector y, realtype *g, void *ud)
  * tout and the roots, which are interpolated): the state at p is read by the
  * root function in the step that holds it (gw_sun_peek_catch), and the ends
  * of the call's later steps are kept for a later peek before the return held
- * back (a quartic in its own step); a cubic Hermite over several steps (4.6e-3
- * off on test_solver_peek's oscillator, erk) is left for peeks past the kept
- * ends. Stopping at p instead changed the run: e_n by 7.6e-8 at --dt-out 3e-5
- * on the 40-disc pile of `layer-make --n 40` (test_dt_out_bitwise). */
+ * back (a quartic in its own step), all of them up to GW_SUN_PEEK_END_BYTES
+ * (a peek past the ends kept fails: a cubic Hermite over several steps was
+ * 4.6e-3 off on test_solver_peek's oscillator, erk, and 271 on
+ * test_solver_peek_far's, when only 16 were kept). Stopping at p instead
+ * changed the run: e_n by 7.6e-8 at --dt-out 3e-5 on the 40-disc pile of
+ * `layer-make --n 40` (test_dt_out_bitwise). */
 static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     ark_impl *a = s->impl;

@@ -331,7 +331,12 @@ static const gw_sun_stepper cv_stepper = {"cvode", "CV_TOO_MUCH_WORK", cv_where,
  * instead (CVode towards p) changed the run: another first step after each
  * restart (CVODE's estimate knows tout), another root bracket, and the
  * restart the layer makes at an output where a contact changed. arkode reads
- * the same way (ark_advance), with ARKode's limits. */
+ * the same way (ark_advance), with ARKode's limits. A system without roots
+ * is taken one step at a time up to the step that passes p (no root function
+ * keeps the ends of a CV_NORMAL call's steps; the steps and the output at tout
+ * are the same in both modes): given a first step reaching tout, its first
+ * call went towards tout and a peek was a cubic over its steps, off by 2 on
+ * test_solver_peek_far's oscillator. */
 static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     cv_impl *c = s->impl;

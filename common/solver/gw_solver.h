@@ -222,7 +222,13 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
  * verlet: the step that holds tpeek taken, the state there a cubic Hermite
  * between its ends for the drifts and their velocities, a line for the other
  * components; a root that step found is returned by the next call). Returns 1
- * when armed, 0 when the backend has none (nothing armed); tpeek <= 0 disarms. */
+ * when armed, 0 when the backend has none (nothing armed); tpeek <= 0 disarms.
+ * cvode and arkode keep the ends of the steps after a peek, so that a later
+ * peek before a return held back is read in its own step, up to 256 MiB of
+ * states and rates: a peek past them fails with GW_ELIMIT (GW_ENOMEM when
+ * memory ran out first) naming the limit, the peek disarmed, *t and y as they
+ * were, the return held back given by the next advance (never a value
+ * interpolated over several steps). */
 enum { GW_SOLVER_PEEK = 2 };
 int gw_solver_set_peek(gw_solver *s, double tpeek);
 

@@ -408,6 +408,7 @@ void gw_sun_peek_start(gw_sun_peek *k, double t)
     k->got = 0;
     k->rec = 0;
     k->nend = 0;
+    k->lost = 0;
 }
 
 void gw_sun_peek_free(gw_sun_peek *k)
@@ -416,12 +417,13 @@ void gw_sun_peek_free(gw_sun_peek *k)
     for (size_t i = 0; i < sizeof v / sizeof *v; i++)
         if (*v[i])
             N_VDestroy(*v[i]), *v[i] = NULL;
-    for (int i = 0; i < GW_SUN_PEEK_ENDS; i++) {
-        if (k->yend[i])
-            N_VDestroy(k->yend[i]), k->yend[i] = NULL;
-        if (k->fend[i])
-            N_VDestroy(k->fend[i]), k->fend[i] = NULL;
+    for (long i = 0; i < k->nvec; i++) {
+        N_VDestroy(k->yend[i]);
+        N_VDestroy(k->fend[i]);
     }
+    free(k->tend), free(k->yend), free(k->fend), free(k->fok);
+    k->tend = NULL, k->yend = k->fend = NULL, k->fok = NULL;
+    k->nend = k->cap = k->nvec = 0;
 }
 
 int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int *roots)
@@ -434,6 +436,44 @@ int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int 
     if (!root)
         return GW_OK;
     return k->st->root_info(s, roots);
+}
+
+/* Room for the kept end i (i <= k->nend): the arrays grown and its two
+ * vectors made when needed. GW_OK, GW_ELIMIT past GW_SUN_PEEK_END_BYTES,
+ * GW_ENOMEM (what was kept stays). */
+static int end_room(gw_sun_peek *k, long i, long dim)
+{
+    const size_t per_end = 2 * (size_t)dim * sizeof(double);
+    if ((size_t)i >= GW_SUN_PEEK_END_BYTES / per_end)
+        return GW_ELIMIT;
+    if (i >= k->cap) {
+        const long cap = k->cap ? 2 * k->cap : 16;
+        double *tend = realloc(k->tend, (size_t)cap * sizeof *tend);
+        if (tend)
+            k->tend = tend;
+        N_Vector *yend = tend ? realloc(k->yend, (size_t)cap * sizeof *yend) : NULL;
+        if (yend)
+            k->yend = yend;
+        N_Vector *fend = yend ? realloc(k->fend, (size_t)cap * sizeof *fend) : NULL;
+        if (fend)
+            k->fend = fend;
+        unsigned char *fok = fend ? realloc(k->fok, (size_t)cap * sizeof *fok) : NULL;
+        if (!fok)
+            return GW_ENOMEM;
+        k->fok = fok;
+        k->cap = cap;
+    }
+    if (i < k->nvec)
+        return GW_OK;
+    k->yend[i] = N_VClone(k->y);
+    k->fend[i] = k->yend[i] ? N_VClone(k->y) : NULL;
+    if (!k->fend[i]) {
+        if (k->yend[i])
+            N_VDestroy(k->yend[i]);
+        return GW_ENOMEM;
+    }
+    k->nvec = i + 1;
+    return GW_OK;
 }
 
 void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
@@ -451,14 +491,17 @@ void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
         k->want = 0;
     }
     /* a step's end (the root function at the step's end, its state there):
-     * kept from the last one before the peek on, while there is room */
-    if (!k->rec || t != tn || !(hu > 0) || (k->nend > 0 && !(tn > k->tend[k->nend - 1])))
+     * kept from the last one before the peek on, every one after it (none
+     * after one that could not be kept: the ends kept are consecutive) */
+    if (!k->rec || k->lost || t != tn || !(hu > 0) || (k->nend > 0 && !(tn > k->tend[k->nend - 1])))
         return;
-    int i = k->want > 0 ? 0 : k->nend; /* before the peek: only the last end */
-    if (i >= GW_SUN_PEEK_ENDS)
+    const long i = k->want > 0 ? 0 : k->nend; /* before the peek: only the last end */
+    const int rc = end_room(k, i, s->sys.dim);
+    if (rc != GW_OK) {
+        k->lost = rc;
+        k->lost_t = tn;
         return;
-    if ((!k->yend[i] && !(k->yend[i] = N_VClone(k->y))) || (!k->fend[i] && !(k->fend[i] = N_VClone(k->y))))
-        return; /* (no room: the Hermite spans the steps left) */
+    }
     N_VScale(1.0, y, k->yend[i]);
     k->tend[i] = tn;
     k->fok[i] = 0; /* (its rate when a peek reads it: end_rate) */
@@ -467,7 +510,7 @@ void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
 
 /* The rate at the kept end i (the system's rhs there, once): 1, or 0 when the
  * rhs failed. */
-static int end_rate(gw_solver *s, gw_sun_peek *k, int i)
+static int end_rate(gw_solver *s, gw_sun_peek *k, long i)
 {
     if (!k->fok[i])
         k->fok[i] = s->sys.rhs(k->tend[i], N_VGetArrayPointer(k->yend[i]), N_VGetArrayPointer(k->fend[i]),
@@ -478,13 +521,16 @@ static int end_rate(gw_solver *s, gw_sun_peek *k, int i)
 /* The state at p into k->yp: the one read in the step that held it during the
  * call (gw_sun_peek_catch), else the dense output within the last step; a p
  * before it (a call towards tout of several steps, from t0 where the state was
- * k->y0 and its rate k->d0, have0 1; have0 2: the rate unknown) by a cubic
- * Hermite between t0 and the last step's start. */
-static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
+ * k->y0 and its rate k->d0, have0 1; have0 2: the rate unknown) in its own
+ * step, between the kept ends around it (a quartic). GW_OK; GW_ELIMIT or
+ * GW_ENOMEM when p lies past the ends kept (gw_sun_peek.lost), GW_ESOLVER when
+ * the system's rate failed at a kept end: the message on the solver, nothing
+ * read (a cubic over the steps between would be a silent loss of accuracy). */
+static int peek_state(gw_solver *s, gw_sun_peek *k, double p)
 {
     if (k->got && k->got_t == p) {
         k->got = 0;
-        return;
+        return GW_OK;
     }
     const int have0 = k->have0;
     const double t0 = k->t0;
@@ -493,28 +539,49 @@ static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
     k->st->where(s, &nst, &tn, &hnext, &hu);
     if ((p >= tn - hu && p <= tn) || !have0) {
         k->st->dky(s, fmin(tn, fmax(tn - hu, p)), 0, k->yp);
-        return;
+        return GW_OK;
+    }
+    /* the ends kept are those of consecutive steps up to the last before the
+     * one that could not be kept: p past them and before the last step is in
+     * a step whose ends are not known */
+    const double kept = k->nend > 0 ? k->tend[k->nend - 1] : t0;
+    if (k->lost && p > kept) {
+        const char *name = k->st->name;
+        if (k->lost == GW_ELIMIT)
+            gw_solver_set_error(s, "%s: the sample at t = %.9g s is past the step ends kept for it (%ld, up to "
+                                "t = %.9g s; the limit of %zu MiB of kept states and rates, GW_SUN_PEEK_END_BYTES, "
+                                "was reached at t = %.9g s): sample fewer steps after the one before",
+                                name, p, k->nend, kept, GW_SUN_PEEK_END_BYTES >> 20, k->lost_t);
+        else
+            gw_solver_set_error(s, "%s: the sample at t = %.9g s is past the step ends kept for it (%ld, up to "
+                                "t = %.9g s): out of memory for the end at t = %.9g s",
+                                name, p, k->nend, kept, k->lost_t);
+        return k->lost;
     }
     /* the Hermite's ends: the kept steps' ends around p (gw_sun_peek_catch),
      * else the call's start and the last step's */
     double ta = t0, tb = tn - hu;
     const double *y0 = N_VGetArrayPointer(k->y0), *d0 = N_VGetArrayPointer(k->d0);
     const double *yb = NULL, *fb = NULL;
-    int ia = -1, ib = -1;
-    for (int i = 0; i < k->nend; i++) {
+    long ia = -1, ib = -1;
+    for (long i = 0; i < k->nend; i++) {
         if (k->tend[i] <= p && k->tend[i] > ta)
             ta = k->tend[i], ia = i;
         if (k->tend[i] >= p && k->tend[i] < tb)
             tb = k->tend[i], ib = i;
     }
-    if (ia >= 0 && end_rate(s, k, ia))
+    for (int e = 0; e < 2; e++) {
+        const long i = e ? ib : ia;
+        if (i >= 0 && !end_rate(s, k, i)) {
+            gw_solver_set_error(s, "%s: the sample at t = %.9g s: the system's rate failed at the end of its "
+                                "step, t = %.9g s", k->st->name, p, k->tend[i]);
+            return GW_ESOLVER;
+        }
+    }
+    if (ia >= 0)
         y0 = N_VGetArrayPointer(k->yend[ia]), d0 = N_VGetArrayPointer(k->fend[ia]);
-    else
-        ta = t0;
-    if (ib >= 0 && end_rate(s, k, ib))
+    if (ib >= 0)
         yb = N_VGetArrayPointer(k->yend[ib]), fb = N_VGetArrayPointer(k->fend[ib]);
-    else
-        tb = tn - hu;
     const int have = ta > t0 ? 1 : have0;
     const double t1 = tb, H = t1 - ta, u = H > 0 ? (p - ta) / H : 1;
     if (!yb) {
@@ -531,7 +598,7 @@ static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
     if (have != 1) {
         for (long i = 0; i < n; i++)
             yp[i] = (1 - u) * y0[i] + u * yp[i];
-        return;
+        return GW_OK;
     }
     /* a quartic: the cubic plus c th^2 (1 - th)^2, whose c gives the system's
      * rate at th = 2/3 of the interval (as ARKode's dense output of degree 4
@@ -551,6 +618,7 @@ static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
             c = (fm[i] - (dm[0] * y0[i] + dm[1] * d0[i] + dm[2] * yp[i] + dm[3] * d1[i])) / dq;
         yp[i] = w[0] * y0[i] + w[1] * d0[i] + w[2] * yp[i] + w[3] * d1[i] + c * q;
     }
+    return GW_OK;
 }
 
 int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots)
@@ -567,8 +635,9 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
         k->pend = 0;
     if (k->pend && p > k->pend_t)
         return gw_sun_peek_pending(s, k, t, y, roots);
+    int rc = GW_OK;
     if (k->pend) { /* another peek before the return held back */
-        peek_state(s, k, p);
+        rc = peek_state(s, k, p);
     } else {
         int flag = st->prepare(s, tout);
         if (flag < 0)
@@ -591,8 +660,13 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
             /* p already in the last step (a call towards tout went past it):
              * a one-step call searches the rest of the step for roots, as one
              * towards tout does short of tout, and returns without a step */
-            const int normal = !started ? st->first_normal(s, tout)
-                                        : tn >= tout || (p > tn && tn + grow * hcur >= tout);
+            /* without roots the mode changes only where the call returns
+             * (the steps and the output at tout are the same): one step at a
+             * time, so that p is read in the step that passed it (no root
+             * function keeps the ends of a call's steps) */
+            const int roots_on = s->sys.nroots > 0;
+            const int normal = !started ? roots_on && st->first_normal(s, tout)
+                                        : tn >= tout || (roots_on && p > tn && tn + grow * hcur >= tout);
             k->have0 = 0;
             k->t0 = tn;
             if (p > tn) {
@@ -604,7 +678,7 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
                 }
             }
             if (started && p <= k->tlast) { /* searched, in the last step: no call */
-                peek_state(s, k, p);
+                rc = peek_state(s, k, p);
                 break;
             }
             double tret = *k->t;
@@ -620,12 +694,12 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
             }
             k->root_last = flag == 1;
             if (p <= tret) {
-                peek_state(s, k, p);
                 if (normal || flag == 1) {
                     k->pend = flag == 1 ? 2 : 1;
                     k->pend_t = tret;
                     k->pend_tout = tout;
                 }
+                rc = peek_state(s, k, p);
                 break;
             }
             if (flag == 1 || normal) {
@@ -637,6 +711,8 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
         }
     }
     s->peek = 0;
+    if (rc != GW_OK) /* (the peek disarmed, *t and y as they were, a return held back kept) */
+        return rc;
     *k->t = p;
     *t = p;
     gw_sun_copy_out(k->yp, y, s->sys.dim);

@@ -176,14 +176,25 @@ typedef struct gw_sun_peek {
     int got;
     /* the ends of the steps of a call towards tout (rec 1), from the last
      * one before the peek on: their times, states and rates, so that a later
-     * peek before the return held back is read in its own step (at most
-     * GW_SUN_PEEK_ENDS; past them the Hermite spans the steps left) */
-    int rec, nend;
-    double tend[16];
-    N_Vector yend[16], fend[16];
-    int fok[16]; /* fend[i] computed */
+     * peek before the return held back is read in its own step. The arrays
+     * grow as the call's steps are taken (cap entries, the vectors of the
+     * first nvec made and kept for the next calls), up to
+     * GW_SUN_PEEK_END_BYTES of kept states and rates; past it, or when memory
+     * runs out, lost is set (GW_ELIMIT, GW_ENOMEM) with lost_t the first end
+     * not kept, no end is kept after it, and a later peek that would need it
+     * fails (no cubic over several steps: a silent loss of accuracy) */
+    int rec;
+    long nend, cap, nvec;
+    double *tend;
+    N_Vector *yend, *fend;
+    unsigned char *fok; /* fend[i] computed */
+    int lost;
+    double lost_t;
 } gw_sun_peek;
-enum { GW_SUN_PEEK_ENDS = 16 };
+/* The bytes of step ends (a state and a rate each) one call may keep for its
+ * peeks: 256 MiB, 16 ends of a system of 2^20 components, 8 million ends of
+ * a 2-component oscillator. */
+#define GW_SUN_PEEK_END_BYTES ((size_t)256 << 20)
 
 /* The driver's state at a start (the set-up or a restart at t). */
 void gw_sun_peek_start(gw_sun_peek *k, double t);
@@ -194,7 +205,11 @@ int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int 
 /* An advance towards tout with the peek s->peek before it (the comments on
  * cv_advance in gw_backend_cvode.c and ark_advance in gw_backend_arkode.c say
  * how and why): GW_SOLVER_PEEK with the state there, or the return the
- * advance would have made before it. */
+ * advance would have made before it. A peek in a step whose ends were not kept
+ * (gw_sun_peek.lost: GW_SUN_PEEK_END_BYTES reached, GW_ELIMIT; out of memory,
+ * GW_ENOMEM) or whose end's rate failed (GW_ESOLVER) fails with the message on
+ * the solver: the peek disarmed, *t and y as they were, a return held back
+ * given at the next call. */
 int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots);
 /* From the backend's root function, called after each step it takes (and in
  * its root search, (t, y) its arguments): the peek asked for during the call,

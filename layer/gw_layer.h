@@ -927,9 +927,15 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 /* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
 int gw_layer_impact_dt_divides(double dt, double dt_out);
 
+/* The longest step an impact is given (sp->dt), s: the bound of
+ * layer-impact --dt (its option row's), far above any contact time
+ * (microseconds); gw_layer_impact_step_check refuses a longer one. */
+#define GW_LAYER_DT_MAX 1.0
+
 /* The solver's step and tolerances of an impact: GW_EINVAL naming sp->dt or
- * sp->dt_max when not 0 or a normal finite number > 0, or a tolerance every
- * backend refuses. A step given need not divide ip->dt_out nor be shorter:
+ * sp->dt_max when not 0 or a normal finite number > 0, sp->dt above
+ * GW_LAYER_DT_MAX (until session 48 a verlet step of 1e200 s passed the
+ * library, which the program refused), or a tolerance every backend refuses. A step given need not divide ip->dt_out nor be shorter:
  * the samples off the steps are read between two steps (verlet, rk4), and
  * the outcome is the same step's at a dt_out it divides, bit for bit (until
  * session 46 verlet's dt had to divide dt_out, GW_EINVAL "dt-out: ...", and

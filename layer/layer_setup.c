@@ -62,7 +62,7 @@ static const gw_param impact_params[] = {
            "verlet (explicit DEM, no located events), rk4, cvode or arkode [verlet; rk4 with exact]"),
     CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME",
            "cvode: bdf|adams; arkode: erk|dirk [adams / erk]"),
-    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, 0, "0", "DT",
+    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, GW_LAYER_DT_MAX, 0, 0, "0", "DT",
         "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]"),
     FLAG("exact", exact, "exact mode: RK4 (or solver cvode|arkode) stopping at every contact and stick/slip "
                          "transition, dt 1e-6 s; the reference the fast default is tested against"),

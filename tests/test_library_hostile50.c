@@ -37,7 +37,9 @@
  *     the solver's set-up after the layer was built; a verlet dt above dt-out
  *     was told "a dt that divides it such as -inf s": gw_layer_impact_step_check
  *     refuses each naming it and named dt-out itself as a divisor (since
- *     session 46 such a step runs: the samples are read between the steps).
+ *     session 46 such a step runs: the samples are read between the steps;
+ *     since session 48 up to GW_LAYER_DT_MAX, 1 s, the bound of the
+ *     program's --dt: a verlet dt of 1e200 s passed the library).
  *   - yes/no members other than 0 and 1 ran as 1 with GW_OK: the impact's
  *     full, remove_walls, other_settling, zero_springs, the layer's no_events
  *     and potential_from_start, the pluviation's clumps, the dispersion's
@@ -305,17 +307,28 @@ static int c_layer_steps(void)
     gw_solver_params sp = gw_solver_params_default();
     sp.rtol = NAN;
     EXPECT(refused(gw_layer_impact_step_check(&ip, gw_solver_verlet, &sp, &e), &e, "rtol: nan"));
-    /* a step given that dt-out is not a multiple of (verlet 3e-6 s, and
-     * 1e200 s, which was told "such as -inf s" and then "such as 2e-05 s"),
-     * or above dt-out (rk4 1e-4 s): refused until session 46, run now (the
-     * samples off the steps read between them: test_dt_out_bitwise) */
+    /* a step given that dt-out is not a multiple of (verlet 3e-6 s), or above
+     * dt-out (rk4 1e-4 s): refused until session 46, run now (the samples off
+     * the steps read between them: test_dt_out_bitwise) */
     sp = gw_solver_params_default();
     sp.dt = 3e-6;
     EXPECT(gw_layer_impact_step_check(&ip, gw_solver_verlet, &sp, &e) == GW_OK);
-    sp.dt = 1e200;
-    EXPECT(gw_layer_impact_step_check(&ip, gw_solver_verlet, &sp, &e) == GW_OK);
     sp.dt = 1e-4;
     EXPECT(gw_layer_impact_step_check(&ip, gw_solver_rk4, &sp, &e) == GW_OK);
+    /* a step above GW_LAYER_DT_MAX (1 s, layer-impact --dt's bound): 1e200 s
+     * was told "such as -inf s", then "such as 2e-05 s", and passed from
+     * session 46 to 48, as did 2 s, which the program refused; 1 s passes
+     * (control), under verlet and rk4 */
+    const gw_solver_type *const fixed[] = {gw_solver_verlet, gw_solver_rk4};
+    for (int k = 0; k < 2; k++) {
+        sp = gw_solver_params_default();
+        sp.dt = 1e200;
+        EXPECT(refused(gw_layer_impact_step_check(&ip, fixed[k], &sp, &e), &e, "dt: 1e+200 s is above 1 s"));
+        sp.dt = 2;
+        EXPECT(refused(gw_layer_impact_step_check(&ip, fixed[k], &sp, &e), &e, "dt: 2 s is above 1 s"));
+        sp.dt = GW_LAYER_DT_MAX;
+        EXPECT(gw_layer_impact_step_check(&ip, fixed[k], &sp, &e) == GW_OK);
+    }
     /* controls: the automatic step and a step that divides dt-out */
     sp = gw_solver_params_default();
     EXPECT(gw_layer_impact_step_check(&ip, gw_solver_verlet, &sp, &e) == GW_OK);
@@ -483,7 +496,8 @@ static const child_row rows[] = {
     {"cvode, arkode: a first step of 1.8e308 s runs as the default", c_first_step_huge},
     {"solver: sp.use_jac -1, 2, INT_MIN refused by the check and the run; 0 and 1 agree", c_use_jac},
     {"chain params: subnormal yield pressure, sensor mass, guide, gravity, gamma", c_chain_subnormal_ranges},
-    {"layer step check: dt, dt_max NaN/-1/-inf/inf/subnormal, rtol NaN; any dt-out passes", c_layer_steps},
+    {"layer step check: dt, dt_max NaN/-1/-inf/inf/subnormal, rtol NaN, dt 2 and 1e200; any dt-out passes",
+     c_layer_steps},
     {"layer impact: a verlet dt of NaN refused (ran as the automatic step)", c_layer_impact_dt_nan},
     {"layer: yes/no members other than 0 and 1 refused", c_layer_flags},
     {"layer impact: rb-rm outside [1e-6, 1e6] refused", c_layer_rb_rm},

@@ -9,9 +9,10 @@
  * call towards 1 s takes every step up to it (347 to 1333 steps): cvode is
  * given a first step of 1 s (its first call then goes towards tout), arkode
  * has a root function (its first call after a start is then towards tout);
- * the root function g = y + 2 never vanishes, so nothing cuts the call. The
- * second sample comes about 17 to 67 steps after the first. Before session 48 only
- * 16 step ends after the first sample were kept, and a later sample was a
+ * the root function g = y + 2 never vanishes, so nothing cuts the call.
+ * Samples 0.05 s apart are about 17 (dirk) to 67 (bdf) steps apart, the
+ * third 30 to 117 steps after the first. Before session 48 only 16 step
+ * ends after the first sample were kept, and a later sample was a
  * cubic Hermite over the steps left, up to ten periods: 213 to 294 off (the
  * amplitude is 1). cvode without roots (no root function, so no end kept at
  * all) went towards tout in one call and read even the first sample that way

@@ -14,7 +14,10 @@
 #    crowns_nulled 2 and one "# warning: crowns: 2 of 2 cases ..." line in the
 #    table and on stderr, the same table from 1 and 2 threads and after a
 #    resume (results.csv removed, the journal kept), and in Python's sweep;
-#  - a side-walls sweep's slump_ke column: the single run's value.
+#  - a side-walls sweep's slump_ke column: the single run's value;
+#  - crowns_nulled in --json (absent before): 8 on the default impact, 0 at
+#    --vi 10 (every speed read), 2 with --until verdict, 4 at --vi 40 (locked),
+#    Python's the same, and a sweep row's the single run's.
 . "$2/tests/refusal_lib.sh"
 test_setup "$@"
 PY=/usr/bin/python3
@@ -40,6 +43,28 @@ PY
 grep -q "wave speed undecided, its scatter (cross-correlation" d.txt && ok "text: undecided, its scatter" ||
     ko "text: $(grep 'cross-correlation' d.txt)"
 
+# --- crowns_nulled in --json: the rules as bits, as a sweep's row and Python's
+# outcome carry them (absent from the JSON before): the default impact 8 (the
+# scatter), --vi 10 0 (every speed read, no crowns warning), --until verdict 2
+# (the run's end), --vi 40 4 (the pile's slow motion) ---
+"$GW" layer-impact --sample S40 --vi 10 --json --quiet >n0.json 2>/dev/null
+"$GW" layer-impact --sample S40 --until verdict --json --quiet >n2.json 2>/dev/null
+"$GW" layer-impact --sample S40 --vi 40 --json --quiet >n4.json 2>/dev/null
+got=$($PY - d.json n0.json n2.json n4.json <<'PY' 2>&1
+import json, sys
+want, bad = [8, 0, 2, 4], []
+for f, w in zip(sys.argv[1:], want):
+    d = json.load(open(f))
+    v = d.get("crowns_nulled", "absent")
+    speeds = [d[k] for k in ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr")]
+    # a rule's bit set: a speed null and a warning; 0: every speed read, no crowns warning
+    if v != w or (w and (None not in speeds or not d["warnings"])) or (not w and (None in speeds or d["warnings"])):
+        bad.append("%s: crowns_nulled %r (want %d), speeds %r, warnings %r" % (f, v, w, speeds, [x[:60] for x in d["warnings"]]))
+print("ok" if not bad else "; ".join(bad))
+PY
+)
+[ "$got" = ok ] && ok "--json: crowns_nulled 8 (scatter), 0 (none), 2 (run's end), 4 (locked)" || ko "--json crowns_nulled: $got"
+
 # --- sweeps ---
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = S40\nuntil = verdict\n' >lv.ini
 "$GW" sweep lv.ini --out lv1 --quiet --jobs 1 2>lv1.err; rc=$?
@@ -57,6 +82,16 @@ PY
 )
 [ $rc -eq 0 ] && [ "$got" = ok ] && ok "sweep: wave_speed nan, crowns_nulled 2 in both rows, one '# warning: crowns: 2 of 2 cases' line" ||
     ko "sweep: exit $rc, $got"
+# the single run of the first case: its JSON's crowns_nulled the row's
+"$GW" layer-impact --sample S40 --vi 10 --until verdict --json --quiet >lv0.json 2>/dev/null
+got=$($PY - lv1/results.csv lv0.json <<'PY' 2>&1
+import csv, json, sys
+rows = list(csv.DictReader([l for l in open(sys.argv[1]) if not l.startswith("#")]))
+v = json.load(open(sys.argv[2])).get("crowns_nulled", "absent")
+print("ok" if rows and str(v) == rows[0].get("crowns_nulled") == "2" else "JSON %r, row %r" % (v, rows[0].get("crowns_nulled") if rows else None))
+PY
+)
+[ "$got" = ok ] && ok "sweep: the case's single run gives the row's crowns_nulled (2) in --json" || ko "sweep against --json: $got"
 [ "$(grep -c "warning: crowns: 2 of 2 cases" lv1.err)" = 1 ] && ok "sweep: the line on stderr" ||
     ko "sweep stderr: $(head -c 400 lv1.err)"
 "$GW" sweep lv.ini --out lv2 --quiet --jobs 2 2>/dev/null
@@ -80,7 +115,7 @@ PY
 [ "$got" = ok ] && ok "side-walls sweep: slump_ke the single run's" || ko "side-walls sweep: $got"
 
 # --- Python ---
-py_checks 5 <<EOF
+py_checks 6 <<EOF
 import math
 r, ws = caught(granwave.layer_impact, sample="$tmp/S40")
 check(r is not None and math.isnan(r.get("wave_speed_xcorr", 0.0)) and
@@ -93,6 +128,10 @@ check(r2 is not None and abs(r2.get("slump_ke", float("nan")) - want) <= 1e-12 *
       "Python: slump_ke with side_walls left, the JSON's")
 check(r2 is not None and r2.get("crowns_nulled", -1) >= 0 and r.get("crowns_nulled") == 8,
       "Python: crowns_nulled 8 (the scatter) on the default impact")
+got = [(caught(granwave.layer_impact, sample="$tmp/S40", **kw)[0] or {}).get("crowns_nulled")
+       for kw in ({"vi": 10}, {"vi": 40})]
+want = [json.load(open("$tmp/%s.json" % f)).get("crowns_nulled") for f in ("n0", "n4")]
+check(got == want == [0, 4], "Python: crowns_nulled %r, --json's %r (want [0, 4])" % (got, want))
 s, ws = caught(granwave.sweep, "layer", {"vi": [10, 20]}, sample="$tmp/S40", until="verdict")
 check(sum("crowns: 2 of 2 cases" in w for w in ws) == 1, "Python sweep: one crowns line %r" % [w[:80] for w in ws])
 EOF

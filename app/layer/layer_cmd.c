@@ -302,8 +302,10 @@ static const char *impact_summary =
 /* The impact options are shared with the layer sweep model (layer_cli.c). */
 typedef layer_impact_cli impact_cli;
 
-static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
-                          const gw_solver_params *sp)
+/* nulled: the rules that left a crown speed null with a warning
+ * (GW_LAYER_NULLED_*, gw_layer_impact_outcome.crowns_nulled) */
+static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r, const gw_solver_params *sp,
+                          int nulled)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "version", gw_version());
@@ -354,6 +356,9 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "wave_speed_xcorr", r->wave_speed_xcorr);
     cJSON_AddNumberToObject(o, "wave_speed_xcorr_err", r->wave_speed_xcorr_err);
     cJSON_AddNumberToObject(o, "wave_xcorr_gaps", r->xcorr_gaps);
+    /* the bits a sweep's row and Python's outcome carry: the JSON had only
+     * the warnings' text to tell a nulled speed's rule by */
+    cJSON_AddNumberToObject(o, "crowns_nulled", nulled);
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
     cJSON_AddNumberToObject(o, "block_mass", r->block_mass);
     cJSON_AddNumberToObject(o, "froude", c->ip.vi / sqrt(2 * c->m.lp.gravity * c->ip.rb_rm * c->rm));
@@ -723,8 +728,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
     }
     int rc = layer_impact_run(&s, &c.m.lp, &c.ip, type, &sp, &found, &r, &err);
     char *w = NULL; /* the warnings: the crowns' against the sample first, while it is here */
+    int nulled = 0; /* the rules that nulled a crown speed (the JSON's crowns_nulled) */
     if (rc == GW_OK)
-        (void)layer_crowns_warning(&s, &c.ip, &r, &w);
+        (void)layer_crowns_warning_kinds(&s, &c.ip, &r, &w, &nulled);
     if (vc.failed) /* the writer's own message, not the run's "the hook stopped it" */
         err = vc.err;
     else if (rc != GW_OK && vc.failure_file[0]) {
@@ -761,7 +767,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     if (gw_layer_impact_result_warnings(&r, &w) == GW_OK)
         (void)layer_energy_warning(&r, &c.ip, type, &sp, &w);
     gw_cli_warnings("layer-impact", w);
-    cJSON *j = impact_json(&c, &r, &sp);
+    cJSON *j = impact_json(&c, &r, &sp, nulled);
     gw_cli_json_warnings(j, w);
     if (c.out) {
         /* the command line and every setting (defaults included, the step used)

@@ -763,6 +763,13 @@ static int exit_code(int rc)
     return rc == GW_ENOMEM ? 1 : 2;
 }
 
+/* the check pass's progress (gw_sweep_check_pass), said as it goes */
+static int check_progress(void *ctx, long done, long total)
+{
+    gw_cli_progress_report(ctx, done, total);
+    return 0;
+}
+
 int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, const gw_sweep_run_part_fn *parts,
                  const gw_sweep_weigh *const *weighs, int nmodels)
 {
@@ -845,37 +852,20 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
     }
     /* Validate every case before running anything (bad values exit 2). */
     if (code == 0 && rank == 0 && m->check) {
-        const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
         /* a layer case is checked in about 0.2 to 0.6 ms (its sample read):
          * a grid of 1e5 cases takes a minute, 1e9 days; say so as it goes */
         gw_cli_progress chk;
         gw_cli_progress_init(&chk, "sweep: checked ", "cases", 2000);
         chk.quiet = quiet;
-        void *memo = NULL; /* the model's, over this pass (a layer sample read once) */
-        for (long k = 0; k < cfg.ncases && code == 0; k++) {
-            if (k > 0 && k % 1000 == 0)
-                gw_cli_progress_report(&chk, k, cfg.ncases);
-            gw_sweep_case(&cfg, k, names, values);
-            if ((rc = gw_sweep_case_check(m, &memo, cfg.ngrid + cfg.nparams, names, values, &err)) != GW_OK) {
-                gw_sweep_case_refused(&cfg, m, k, rc, &err);
-                code = exit_code(rc);
-            }
-        }
-        /* what the cases will run other than given (a chain case's dt above
-         * its step): one line over the pass, how many cases it concerns */
+        /* the library's pass, as gw_sweep_run's and Python's: its refusals
+         * (a case, or the config as a whole: a chain key of no effect on any
+         * case) and what the cases will run other than given (a chain case's
+         * dt above its step), one line over the pass */
         char *warn = NULL;
-        if (code == 0 && m->memo_warnings && memo && (rc = m->memo_warnings(memo, &warn)) != GW_OK) {
-            if (rc == GW_EINVAL && warn) /* a key of no effect on any case: warn holds the refusal */
-                code = 2, gw_err_set(&err, GW_EINVAL, "%.*s", (int)strcspn(warn, "\n"), warn);
-            else
-                code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
-            free(warn);
-            warn = NULL;
-        }
-        gw_sweep_warnings_keys(m, warn);
+        if ((rc = gw_sweep_check_pass(&cfg, m, check_progress, &chk, &warn, &err)) != GW_OK)
+            code = exit_code(rc);
         gw_cli_warnings("sweep", warn);
         check_warn = warn; /* the table's "# warning:" lines too */
-        gw_sweep_checks_end(m, memo);
         if (code)
             fprintf(stderr, "granwave sweep: %s: %s\n", gw_cli_path(cq, sizeof cq, pos[0]), err.msg);
         err.msg[0] = '\0';

@@ -338,6 +338,16 @@ static int c_gw_sweep_case_check(void)
     gw_err e = {{0}}; return gw_sweep_case_check(NULL, NULL, 1, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_case_check: m is NULL");
 }
 
+static int c_gw_sweep_check_pass(void)
+{
+    gw_err e = {{0}}; return gw_sweep_check_pass(NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_check_pass: cfg is NULL");
+}
+
+static int c_gw_sweep_case_check_pass(void)
+{
+    gw_err e = {{0}}; return gw_sweep_case_check_pass(NULL, 1, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_case_check_pass: m is NULL");
+}
+
 static int c_gw_sweep_checks_end(void)
 {
     gw_sweep_checks_end(NULL, NULL); return 1;
@@ -532,6 +542,8 @@ static const gw_test_call calls[] = {
     {"gw_stats_group_row", c_gw_stats_group_row},
     {"gw_utf8_len", c_gw_utf8_len},
     {"gw_sweep_case_check", c_gw_sweep_case_check},
+    {"gw_sweep_check_pass", c_gw_sweep_check_pass},
+    {"gw_sweep_case_check_pass", c_gw_sweep_case_check_pass},
     {"gw_sweep_checks_end", c_gw_sweep_checks_end},
     {"gw_sweep_case", c_gw_sweep_case},
     {"gw_sweep_format_row", c_gw_sweep_format_row},

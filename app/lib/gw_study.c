@@ -227,6 +227,28 @@ int gw_sweep_run_text_warned(const char *text, const char *name, int jobs, gw_pr
     return rc;
 }
 
+int gw_sweep_check_text(const char *text, const char *name, char **warnings, gw_err *err)
+{
+    if (warnings)
+        *warnings = NULL;
+    if (!text)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_check_text: text is NULL");
+    int nm = 0;
+    const gw_sweep_model *const *ms = gw_sweep_models(&nm), *m = NULL;
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    int rc = gw_sweep_config_read_string(text, name ? name : "sweep", ms, nm, &cfg, &m, err);
+    if (rc != GW_OK)
+        return rc;
+    rc = gw_sweep_check_pass(&cfg, m, NULL, NULL, warnings, err);
+    if (rc != GW_OK && warnings) {
+        free(*warnings);
+        *warnings = NULL;
+    }
+    gw_sweep_config_free(&cfg);
+    return rc;
+}
+
 void gw_free(void *p)
 {
     free(p);

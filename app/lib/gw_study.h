@@ -80,6 +80,15 @@ int gw_sweep_run_text_warned(const char *text, const char *name, int jobs, gw_pr
                              double **values, long *ncases, const gw_sweep_model **model, char **warnings,
                              gw_err *err);
 
+/* The check pass of the sweep a config given as text describes (the config
+ * read as gw_sweep_run_text reads it), without running a case: the same
+ * refusals, GW_EINVAL "case K: ..." or the config's line, as
+ * gw_sweep_run_text gives before its first case (gw_sweep_check_pass), and
+ * *warnings (may be NULL: none kept) the pass's lines, each ending with '\n',
+ * NULL when none or on failure; free with gw_free. Nothing is run or
+ * written; the memory of the cases at once (jobs) is not checked. */
+int gw_sweep_check_text(const char *text, const char *name, char **warnings, gw_err *err);
+
 /* Free memory the library allocated for the caller (gw_sweep_run_text). */
 void gw_free(void *p);
 

@@ -144,6 +144,34 @@ int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const c
                         const char *const *values, gw_err *err);
 void gw_sweep_checks_end(const gw_sweep_model *m, void *memo);
 
+/* The sweep's check pass over cfg's cases, before any case runs: the one
+ * pass of `granwave sweep` (and its --check), gw_sweep_run(_warned) and
+ * gw_sweep_write_table's warnings. The config's shape (gw_sweep_config_check),
+ * then every case through gw_sweep_case_check with one memo, the first refused
+ * GW_EINVAL (or its status) "case K: MSG" (gw_sweep_case_refused: a [params]
+ * key another case takes says so), then the pass's verdict over its cases as
+ * a whole (m->memo_warnings): a refusal of the config, GW_EINVAL with its one
+ * line (a chain key of no effect on any case: "k: has no effect on one body
+ * (n = 1) in any case ..."), or its warnings, appended to *warnings (may be
+ * NULL: none kept; a gw_warnings_add list, the config's keys named as its
+ * keys, gw_sweep_warnings_keys). GW_OK when the model has no check. progress
+ * (may be NULL) is called before case k for k a positive multiple of 1000
+ * (done k of ncases); non-zero stops the pass, GW_ECANCELED. On failure
+ * *warnings is as it was; GW_ENOMEM for the warnings' memory. */
+int gw_sweep_check_pass(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_progress_fn progress, void *pctx,
+                        char **warnings, gw_err *err);
+
+/* One case's check as a sweep of that one case checks it: gw_sweep_check_pass
+ * over the config of one case whose [params] are the nkeys pairs (each a
+ * config's text of one value), so its verdict is a one-case sweep's, the
+ * refusals of the config as a whole included (gw_sweep_case_check alone
+ * passed chain n = 1, k = 1e9, which a sweep of that case refuses: k has no
+ * effect on one body in any case). A refusal is "case 0: MSG" as the sweep
+ * says it, or the config's line. nkeys outside [0, GW_SWEEP_MAX_KEYS], m,
+ * names, values or one of the pairs NULL: GW_EINVAL naming it. */
+int gw_sweep_case_check_pass(const gw_sweep_model *m, int nkeys, const char *const *names,
+                             const char *const *values, char **warnings, gw_err *err);
+
 
 /* Parse path. Errors (exit code 2 material): unreadable file, syntax error or
  * unknown section/key with "path:line: ..." in err, empty grid values, a grid

@@ -31,11 +31,11 @@ int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, con
 int gw_sweep_model_check(const char *call, const gw_sweep_config *cfg, const gw_sweep_model *m, int run,
                          gw_err *err);
 
-/* gw_sweep_run.c: the warnings of cfg's check pass (every case checked by m,
- * then m->memo_warnings), appended to *list with its config's keys named
- * (gw_sweep_warnings_keys), as the program's sweep says them and writes them
- * into its table: GW_OK; a case refused, a key of no effect on any case or no
- * memory: its status, *list unchanged (nothing said). */
+/* gw_sweep_run.c: the warnings of cfg's check pass (gw_sweep_check_pass),
+ * appended to *list with its config's keys named, as the program's sweep
+ * says them and writes them into its table: GW_OK; a case refused, a key of
+ * no effect on any case or no memory: its status, *list unchanged (nothing
+ * said). */
 int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list);
 
 /* gw_sweep_rows.c: the warnings of a sweep name its config's keys: "--NAME"

@@ -308,31 +308,85 @@ int gw_sweep_model_check(const char *call, const gw_sweep_config *cfg, const gw_
     return GW_OK;
 }
 
+int gw_sweep_check_pass(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_progress_fn progress, void *pctx,
+                        char **warnings, gw_err *err)
+{
+    if (!cfg || !m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_check_pass: %s is NULL", !cfg ? "cfg" : "m");
+    int rc = gw_sweep_config_check(cfg, err);
+    if (rc != GW_OK || (!m->check && !m->check_memo))
+        return rc;
+    const int nk = cfg->ngrid + cfg->nparams;
+    void *memo = NULL; /* the model's, over this pass (a layer sample read once) */
+    for (long k = 0; k < cfg->ncases; k++) {
+        if (progress && k > 0 && k % 1000 == 0 && progress(pctx, k, cfg->ncases) != 0) {
+            gw_sweep_checks_end(m, memo);
+            return gw_err_set(err, GW_ECANCELED, "the check pass was stopped at case %ld of %ld", k, cfg->ncases);
+        }
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
+        gw_sweep_case(cfg, k, names, vals);
+        if ((rc = gw_sweep_case_check(m, &memo, nk, names, vals, err)) != GW_OK) {
+            gw_sweep_checks_end(m, memo);
+            return gw_sweep_case_refused(cfg, m, k, rc, err);
+        }
+    }
+    /* the pass's verdict over its cases as a whole: its warnings, or a
+     * refusal of the config (a chain key of no effect on any case), whose one
+     * line the model appended */
+    char *w = NULL;
+    if (memo && m->memo_warnings && (rc = m->memo_warnings(memo, &w)) != GW_OK) {
+        if (rc == GW_EINVAL && w)
+            gw_err_set(err, GW_EINVAL, "%.*s", (int)strcspn(w, "\n"), w);
+        else
+            rc = gw_err_set(err, GW_ENOMEM, "out of memory");
+    }
+    gw_sweep_checks_end(m, memo);
+    if (rc == GW_OK && w && warnings) {
+        gw_sweep_warnings_keys(m, w);
+        if ((rc = gw_sweep_warnings_append(warnings, w)) != GW_OK)
+            gw_err_set(err, rc, "out of memory");
+    }
+    free(w);
+    return rc;
+}
+
+int gw_sweep_case_check_pass(const gw_sweep_model *m, int nkeys, const char *const *names,
+                             const char *const *values, char **warnings, gw_err *err)
+{
+    if (!m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check_pass: m is NULL");
+    if (nkeys < 0 || nkeys > GW_SWEEP_MAX_KEYS)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check_pass: nkeys: %d is outside [0, %d]", nkeys,
+                          GW_SWEEP_MAX_KEYS);
+    if (nkeys > 0 && (!names || !values))
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check_pass: %s is NULL", !names ? "names" : "values");
+    /* a config of one case, its pairs its [params] (a key twice is the
+     * model's check's refusal, as in any case of a sweep) */
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    char *one[GW_SWEEP_MAX_KEYS];
+    for (int i = 0; i < nkeys; i++) {
+        one[i] = (char *)values[i];
+        cfg.params[i].name = (char *)names[i];
+        cfg.params[i].values = &one[i];
+        cfg.params[i].nvalues = 1;
+    }
+    for (int i = 0; i < nkeys; i++)
+        if (!names[i] || !values[i])
+            return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check_pass: %s[%d] is NULL",
+                              !names[i] ? "names" : "values", i);
+    cfg.nparams = nkeys;
+    cfg.model = (char *)m->name;
+    cfg.read_key = m->read_key;
+    cfg.ncases = 1;
+    return gw_sweep_check_pass(&cfg, m, NULL, NULL, warnings, err);
+}
+
 int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list)
 {
     if (!cfg || !m || !list)
         return GW_EINVAL;
-    if (!m->check && !m->check_memo)
-        return GW_OK;
-    const int nk = cfg->ngrid + cfg->nparams;
-    void *memo = NULL;
-    gw_err e = {{0}};
-    int rc = GW_OK;
-    for (long k = 0; k < cfg->ncases && rc == GW_OK; k++) {
-        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
-        gw_sweep_case(cfg, k, names, vals);
-        rc = gw_sweep_case_check(m, &memo, nk, names, vals, &e);
-    }
-    char *w = NULL;
-    if (rc == GW_OK && memo && m->memo_warnings)
-        rc = m->memo_warnings(memo, &w);
-    gw_sweep_checks_end(m, memo);
-    if (rc == GW_OK && w) {
-        gw_sweep_warnings_keys(m, w);
-        rc = gw_sweep_warnings_append(list, w);
-    }
-    free(w);
-    return rc;
+    return gw_sweep_check_pass(cfg, m, NULL, NULL, list, NULL);
 }
 
 static int same_key(const char *a, const char *b)
@@ -421,43 +475,16 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
         crc = gw_sweep_model_check("gw_sweep_run", cfg, m, 1, err);
     if (crc != GW_OK)
         return crc;
-    const int nk = cfg->ngrid + cfg->nparams;
     if (jobs < 0 || jobs > GW_SWEEP_JOBS_MAX) /* the range of granwave sweep --jobs */
         return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);
     for (long k = 0; k < cfg->ncases * m->ncolumns; k++)
         values[k] = NAN;
-    void *memo = NULL;
-    for (long k = 0; m->check && k < cfg->ncases; k++) {
-        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
-        gw_sweep_case(cfg, k, names, vals);
-        int rc = gw_sweep_case_check(m, &memo, nk, names, vals, err);
-        if (rc != GW_OK) {
-            gw_sweep_checks_end(m, memo);
-            return gw_sweep_case_refused(cfg, m, k, rc, err);
-        }
-    }
-    /* the check pass's warnings, as the program prints them (the caller's
-     * out of memory for them: none kept) */
-    if (memo && m->memo_warnings) {
-        char *w = NULL, **list = warnings ? warnings : &w;
-        const size_t len = *list ? strlen(*list) : 0; /* a refusal (GW_EINVAL): the one line appended */
-        if (m->memo_warnings(memo, list) == GW_EINVAL && *list) {
-            const char *line = *list + len;
-            gw_err_set(err, GW_EINVAL, "%.*s", (int)strcspn(line, "\n"), line);
-            if (warnings && len == 0) {
-                free(*list);
-                *list = NULL;
-            } else if (warnings) {
-                (*list)[len] = '\0';
-            }
-            free(w);
-            gw_sweep_checks_end(m, memo);
-            return GW_EINVAL;
-        }
-        free(w);
-    }
-    gw_sweep_checks_end(m, memo);
-    int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
+    /* the sweep's check pass, as the program's (its warnings, as the
+     * program prints them, appended to *warnings) */
+    int rc = gw_sweep_check_pass(cfg, m, NULL, NULL, warnings, err);
+    if (rc != GW_OK)
+        return rc;
+    rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
     if (rc != GW_OK)
         return rc;
     sweep_ctx s = {cfg, m, values};

@@ -48,7 +48,7 @@ for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported
 
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
            "layer_make", "layer_impact", "layer_stats", "sweep", "sweep_n", "params", "library_path",
-           "layer_impact_check", "layer_make_check", "sweep_case_check",
+           "layer_impact_check", "layer_make_check", "sweep_case_check", "sweep_check",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported", "GranwaveWarning"]
 
@@ -232,14 +232,26 @@ def layer_make_check(**kwargs):
 
 def sweep_case_check(model="layer", **params):
     """One case of a sweep model ("layer" or "chain"), each keyword one value
-    as a sweep's grid or params give it, through the model's check
-    (gw_sweep_case_check), as a sweep's check pass takes each case before any
-    case runs: for the layer model the setup's check (layer_impact_check's)
-    and the impact point's placement (point, points, spacing). None when the
-    case passes; else raises what sweep() raises for that case, with its text.
-    The pass's refusals of the config as a whole (a chain key of no effect in
-    every case) are sweep()'s, not one case's."""
+    as a sweep's grid or params give it, through the sweep's own check pass
+    over a sweep of that one case (gw_sweep_case_check_pass), as a sweep
+    checks its cases before any case runs: the model's check (for the layer
+    model the setup's check, layer_impact_check's, and the impact point's
+    placement: point, points, spacing) and the pass's refusals of the config
+    as a whole (a chain key of no effect in every case: k on one body). None
+    when the case passes; else raises what sweep() of that one case raises,
+    with its text ("sweep: case 0: ..."). Nothing runs."""
     _checks.sweep_case_check(model, params)
+
+
+def sweep_check(model="chain", grid=None, **params):
+    """What sweep(model, grid, **params) refuses before any case runs, without
+    running (gw_sweep_check_text): its keywords, its config and the sweep's
+    check pass over every case (gw_sweep_check_pass: each case's check, then
+    the refusals of the config as a whole). Raises what sweep() raises, with
+    its text; else returns the pass's warnings as sweep() lists them (a list
+    of str, empty when none). The memory of the cases run at once (jobs) is
+    sweep()'s. Nothing is written."""
+    return _sweep.check_sweep(model, grid or {}, params)
 
 
 def falcon(*, progress=None, **kwargs):

@@ -1,7 +1,8 @@
 """The library's checks of the layer's inputs, without a run: what
 layer_impact, layer_make and a layer sweep's case refuse before they run,
 through the C calls that refuse it (gw_layer_impact_setup_check,
-gw_layer_make_plan, the sweep model's case check gw_sweep_case_check). Each
+gw_layer_make_plan, a sweep's check pass over one case
+gw_sweep_case_check_pass). Each
 returns None when the inputs pass and raises what the run raises when they do
 not: the same exception and the same text, the library's message byte for
 byte with the call's inputs named by their keywords (keyword_text), as the
@@ -18,10 +19,9 @@ from ._values import _line, _show, _texts
 _lib._declare("gw_layer_impact_setup_check", ctypes.c_int, ctypes.c_void_p, ctypes.POINTER(_lib.GwErr))
 _lib._declare("gw_layer_make_plan", ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p,
               ctypes.POINTER(_lib.GwErr))
-_lib._declare("gw_sweep_case_check", ctypes.c_int, ctypes.POINTER(_lib.GwSweepModel),
-              ctypes.POINTER(ctypes.c_void_p), ctypes.c_int, ctypes.POINTER(ctypes.c_char_p),
-              ctypes.POINTER(ctypes.c_char_p), ctypes.POINTER(_lib.GwErr))
-_lib._declare("gw_sweep_checks_end", None, ctypes.POINTER(_lib.GwSweepModel), ctypes.c_void_p)
+_lib._declare("gw_sweep_case_check_pass", ctypes.c_int, ctypes.POINTER(_lib.GwSweepModel), ctypes.c_int,
+              ctypes.POINTER(ctypes.c_char_p), ctypes.POINTER(ctypes.c_char_p), ctypes.c_void_p,
+              ctypes.POINTER(_lib.GwErr))
 
 
 def _setup_check(study, kwargs, call):
@@ -56,8 +56,11 @@ def layer_make_check(study, kwargs):
 
 def sweep_case_check(model, params):
     """One case of a sweep model (its keys and values as a sweep's config
-    gives them) through the model's check, as the sweep's check pass takes
-    each case before any runs."""
+    gives them) through the sweep's own check pass over a sweep of that one
+    case (gw_sweep_case_check_pass): the model's check of the case and the
+    pass's verdict over its cases as a whole (a chain key of no effect in
+    every case: n = 1 with k passed the case's check alone, and the sweep of
+    it was refused)."""
     from . import _sweep
     models = _sweep.sweep_models()
     if not isinstance(model, str):
@@ -89,12 +92,7 @@ def sweep_case_check(model, params):
     n = len(names)
     cn = (ctypes.c_char_p * max(n, 1))(*[x.encode() for x in names])
     cv = (ctypes.c_char_p * max(n, 1))(*[x.encode(errors="surrogateescape") for x in values])
-    memo = ctypes.c_void_p()
     err = _lib.GwErr()
-    mp = ctypes.pointer(m)
-    try:
-        rc = lib.gw_sweep_case_check(mp, ctypes.byref(memo), n, cn, cv, ctypes.byref(err))
-    finally:
-        lib.gw_sweep_checks_end(mp, memo)
+    rc = lib.gw_sweep_case_check_pass(ctypes.pointer(m), n, cn, cv, None, ctypes.byref(err))
     if rc != 0:
         _raise(rc, err, "sweep", _sweep._sweep_names(model, m), _texts(list(params.values())))

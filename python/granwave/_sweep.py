@@ -244,20 +244,12 @@ def _grid_lines(model, m, k, v, lines, axes, key_bytes):
                                  f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
 
 
-def run_sweep(model, grid, params, jobs, progress):
-    # jobs reaches C as an int: a float, a bool or a str was cut or read
-    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per
-    # CPU); an integer as every integer keyword takes one (_integer: a 0-d
-    # array np.array(2) too, as n takes np.array(5))
-    given, jobs = jobs, _integer(jobs)
-    if jobs is None:
-        raise TypeError(f"sweep(): jobs must be an integer, not {type(given).__name__}")
-    if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
-        raise GranwaveValueError(f"sweep: jobs: {_digits('sweep: jobs', jobs)} is outside [0, 4096] (0: one per CPU)",
-                                 GW_EINVAL)
+def _config_text(model, grid, params):
+    """The text of the sweep config of model, grid and params, as sweep()
+    hands it to the library, with the model and the grid's values by key
+    (axes); refused naming the keyword."""
     if not isinstance(grid, dict):
         raise TypeError(f"sweep(): grid must be a dict {{keyword: values}}, not {type(grid).__name__}")
-    cb = Progress(progress)
     models = sweep_models()
     if not isinstance(model, str):  # a list raised "unhashable type: 'list'"
         raise TypeError(f"sweep(): model must be a str ({', '.join(map(repr, models))}), not {_kind(model)}")
@@ -311,6 +303,58 @@ def run_sweep(model, grid, params, jobs, progress):
         raise GranwaveValueError(f"sweep() grid: '{big}': the sweep's config takes {len(text)} bytes, above the "
                                  f"{_SWEEP_CONFIG_MAX} the library reads (a range for consecutive integers, or "
                                  f"fewer values)", GW_EINVAL)
+    return text, m, axes
+
+
+def _sweep_raise(rc, err, model, m, params, axes):
+    """The library's refusal of a sweep's config or of its check pass, raised
+    as sweep() raises it."""
+    # "sweep:4: n: '3' and '3' in list '3, 3' are the same value" named
+    # a line of the config this module wrote, which the caller never
+    # saw: the key the message names after it is the caller's input
+    line = re.match(rb"sweep:[0-9]+: ", err.msg)
+    if line:
+        err.msg = err.msg[line.end():]
+    _raise(rc, err, "sweep", _sweep_names(model, m), _texts(list(params.values()) + [
+        x for v in axes.values() for x in v]))
+
+
+_lib._declare("gw_sweep_check_text", ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, ctypes.POINTER(ctypes.c_void_p),
+              ctypes.POINTER(_lib.GwErr))
+
+
+def check_sweep(model, grid, params):
+    """The check pass of sweep(model, grid, **params) (gw_sweep_check_text):
+    its refusals raised as sweep() raises them, else the pass's warnings as
+    sweep() lists them (a list, empty when none). Nothing runs."""
+    text, m, axes = _config_text(model, grid, params)
+    err = _lib.GwErr()
+    wtext = ctypes.c_void_p()
+    rc = lib.gw_sweep_check_text(text.encode(errors="surrogateescape"), b"sweep", ctypes.byref(wtext),
+                                 ctypes.byref(err))
+    said = ctypes.string_at(wtext.value).decode(errors="replace") if wtext.value else ""
+    lib.gw_free(wtext)
+    if rc != 0:
+        _sweep_raise(rc, err, model, m, params, axes)
+    return [keyword_text(t, _sweep_names(model, m), _texts(list(params.values())))
+            for t in said[:-1].split("\n")] if said else []
+
+
+def run_sweep(model, grid, params, jobs, progress):
+    # jobs reaches C as an int: a float, a bool or a str was cut or read
+    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per
+    # CPU); an integer as every integer keyword takes one (_integer: a 0-d
+    # array np.array(2) too, as n takes np.array(5))
+    given, jobs = jobs, _integer(jobs)
+    if jobs is None:
+        raise TypeError(f"sweep(): jobs must be an integer, not {type(given).__name__}")
+    if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
+        raise GranwaveValueError(f"sweep: jobs: {_digits('sweep: jobs', jobs)} is outside [0, 4096] (0: one per CPU)",
+                                 GW_EINVAL)
+    if not isinstance(grid, dict):
+        raise TypeError(f"sweep(): grid must be a dict {{keyword: values}}, not {type(grid).__name__}")
+    cb = Progress(progress)
+    text, m, axes = _config_text(model, grid, params)
     values = _lib.c_double_p()
     ncases = ctypes.c_long()
     mod = ctypes.POINTER(_lib.GwSweepModel)()
@@ -326,14 +370,7 @@ def run_sweep(model, grid, params, jobs, progress):
         lib.gw_free(wtext)
         cb.reraise()
         if rc != 0:
-            # "sweep:4: n: '3' and '3' in list '3, 3' are the same value" named
-            # a line of the config this module wrote, which the caller never
-            # saw: the key the message names after it is the caller's input
-            line = re.match(rb"sweep:[0-9]+: ", err.msg)
-            if line:
-                err.msg = err.msg[line.end():]
-            _raise(rc, err, "sweep", _sweep_names(model, m), _texts(list(params.values()) + [
-                x for v in axes.values() for x in v]))
+            _sweep_raise(rc, err, model, m, params, axes)
         cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
         if ncases.value != len(cases):  # each grid value here must be one case's value there
             raise GranwaveError(f"sweep: the library ran {ncases.value} cases where the grid gives {len(cases)}: "

@@ -81,10 +81,18 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
     /* a step the run chose itself resolves the stiffest contact (or the sensor
      * body's oscillation): "raise it" would be wrong advice there */
     const int chosen = is_dt ? !(given->dt > 0) : !(given->dt_max > 0);
+    /* rk4's dt given: its step is at most the dt-max (a quarter of the shortest
+     * contact), and raising the dt past it changes nothing (dt 1e-9 on kwall
+     * 1e-30: 3.5e20 steps, 5e16 at the cap, was told "raise it") */
+    char raise[200] = "raise it";
+    if (is_dt && !chosen && !(t_len / sp->dt_max <= max_steps_run))
+        gw_snprintf(raise, sizeof raise, "raising it cannot help alone: rk4's step is at most %g s here (%s), still "
+                    "about %.3g steps", sp->dt_max, given->dt_max > 0 ? "the dt-max given" : "a quarter of the "
+                    "shortest contact", t_len / sp->dt_max);
     if (!(t_len / step <= max_steps_run))
         return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
                           "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
-                          !chosen ? "raise it"
+                          !chosen ? raise
                           : is_dt ? "the default step resolves the stiffest contact, the sensor body's oscillation or "
                                     "the wall's fastest Maxwell arm (a longer one loses the run): use cvode or arkode"
                                   : "the default largest step is a quarter of the shortest contact (a longer one can "
@@ -1146,8 +1154,27 @@ static int rk4_dt_stiff(const gw_chain_params *q, const gw_chain_run_opts *o, co
                       "(at least about %.3g over %s, the rest as given)", stiff, dt, name, least, over);
 }
 
+/* Bead 1's largest overlap on the wall (the closed form at v_imp) beyond its
+ * radius: a wall too soft for the Hertz law it is given (kwall 1e-30 N/m^1.5:
+ * 1.5e5 m), whose contact makes the collision as long as it likes (3.5e11 s).
+ * The one absolute scale of the column: the contacts' times and the step are
+ * otherwise relative to each other (k 1e30 on the default wall is as far from
+ * the wall as kwall 1e-30 on the default beads, and there k is the cause). */
+static int wall_too_soft(const gw_chain_params *q)
+{
+    const double m0 = q->masses ? q->masses[0] : q->mass;
+    return gw_chain_dmax1(m0, q->kwall, q->v_imp) > q->radius;
+}
+
+/* soft 1 (wall 1 only): the wall's soft side, a wall too soft for its law
+ * (wall_too_soft) below its best with some kwall within the bound, the rest
+ * as given: its contact lengthens the collision while the bead contacts set
+ * the step. Its kwall was never named: the refusal said "dt: ... raise it"
+ * under rk4 with a dt given (dt 1e-9: raising it to rk4's largest step, a
+ * quarter of the bead contact, still left 5e16 steps), and k (outside
+ * [1.5e-42, 1.6e-18]) without one (left after session 47). */
 static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
-                         const char *over, gw_err *err)
+                         int soft, const char *over, gw_err *err)
 {
     /* (rk4 with a dt given was left out for k: k = 1.8e308 at dt 1e-9 was
      * refused as "dt-max: a step of 2.86e-125 s ..." (left after session 44);
@@ -1174,18 +1201,19 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
     /* the cause: its contact the shortest, shorter than every other (the
      * wall's, a sensor's; the bead-bead ones) as with the softest. A column on
      * a wall of kwall 1.8e308 was otherwise told to take k above 3.9e290. */
-    gw_chain_params soft = q;
-    soft.kc = NULL;
+    gw_chain_params softest = q;
+    softest.kc = NULL;
     if (wall)
-        soft.kwall = DBL_MIN;
+        softest.kwall = DBL_MIN;
     else
-        soft.k = DBL_MIN;
-    gw_chain_params given = soft;
+        softest.k = DBL_MIN;
+    gw_chain_params given = softest;
     if (wall)
         given.kwall = k;
     else
         given.k = k;
-    if (!(chain_contact_tau_min(&given, 2 * q.v_imp) < chain_contact_tau_min(&soft, 2 * q.v_imp) * (1 - 1e-9)))
+    if (!soft &&
+        !(chain_contact_tau_min(&given, 2 * q.v_imp) < chain_contact_tau_min(&softest, 2 * q.v_imp) * (1 - 1e-9)))
         return GW_OK;
     /* the least steps (NaN, beyond the doubles, as more than any) */
     const double g = 0.5 * (sqrt(5.0) - 1);
@@ -1207,13 +1235,15 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
         }
     }
     const double best = 0.5 * (a + b);
+    if (soft && !(wall && wall_too_soft(&q) && lk < best && K_OK(best)))
+        return GW_OK;
     if (!K_OK(best)) /* no k within the bound: under rk4 with a dt given, maybe the dt and k both */
         return rk4_dt_stiff(&q, o, type, wall, k, best, K_STEPS(best) * 1e8, over, err);
     /* under rk4 with a dt given, a k below its best makes too many steps of
      * that dt: the dt is the cause and is named (softwall --solver rk4 --dt
      * 1e-12 was told that its default k, 6.97e9, is outside [1.4e12, 1e28]);
      * k is named above it, where its contact is shorter than the dt allows */
-    if (type == gw_solver_rk4 && o->sp.dt > 0 && lk < best)
+    if (!soft && type == gw_solver_rk4 && o->sp.dt > 0 && lk < best)
         return GW_OK;
     double ends[2];
     for (int side = 0; side < 2; side++) {
@@ -1246,6 +1276,18 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
     if (type == gw_solver_rk4 && o->sp.dt > 0.25 * tau)
         gw_snprintf(dt_given, sizeof dt_given, "; the dt given (%g s) does not change that: rk4's step is at most a "
                     "quarter of the shortest contact", o->sp.dt);
+    if (soft) {
+        const double m0 = q.masses ? q.masses[0] : q.mass;
+        return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
+                          "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii%s and v_imp as given): at this "
+                          "kwall the wall's contact lasts %.3g s and the collision about %.3g s, and the step %s its "
+                          "shortest contact (%.3g s) needs about %.3g steps over %s: too soft a wall",
+                          k, lo, hi, p->n, p->k, type == gw_solver_rk4 && o->sp.dt > 0 ? ", the dt" : "",
+                          gw_chain_tau1(m0, k, q.v_imp), t_expect,
+                          type == gw_solver_rk4 && o->sp.dt > 0 ? "given or, at most, one resolving"
+                                                                : "chosen to resolve",
+                          tau, steps_of(&q, o, type), over);
+    }
     if (wall)
         return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
                           "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii and v_imp as given): at this "
@@ -1272,9 +1314,13 @@ static int stiffness_refusal(const gw_chain_params *p, const gw_chain_run_opts *
     gw_chain_run_opts od = *o;
     od.sp.dt_max = 0;
     gw_err ek = {{0}};
-    int rc = wall_only ? GW_OK : stiff_refusal(p, &od, type, 0, over, &ek);
+    /* a soft wall first: its contact sets the collision's length, which no k
+     * or dt shortens */
+    int rc = stiff_refusal(p, &od, type, 1, 1, over, &ek);
+    if (rc == GW_OK && !wall_only)
+        rc = stiff_refusal(p, &od, type, 0, 0, over, &ek);
     if (rc == GW_OK)
-        rc = stiff_refusal(p, &od, type, 1, over, &ek);
+        rc = stiff_refusal(p, &od, type, 1, 0, over, &ek);
     if (rc == GW_OK)
         return GW_OK;
     if (o->sp.dt_max > 0)
@@ -1376,6 +1422,15 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, over, &e[0]) != GW_OK) {
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
         stiffness_refusal(p, o, pl->type, 0, over, &e[0]); /* k or kwall the cause: named, with its range */
+        /* a wall too soft for its law, where no kwall alone is within the
+         * bound (a dt and k wrong too): named first, the rest after it */
+        if (wall_too_soft(p) && strncmp(e[0].msg, "kwall:", 6) != 0) {
+            const gw_err was = e[0];
+            const double m0 = p->masses ? p->masses[0] : p->mass;
+            gw_err_set(&e[0], GW_EINVAL, "kwall: %g N/m^1.5 is too soft (bead 1 would overlap the wall by about %.3g "
+                       "m, beyond its radius, in a contact of about %.3g s); and %s", p->kwall,
+                       gw_chain_dmax1(m0, p->kwall, p->v_imp), gw_chain_tau1(m0, p->kwall, p->v_imp), was.msg);
+        }
     }
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
@@ -1516,6 +1571,12 @@ int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_
 {
     if (!p || !o)
         return gw_err_set(err, GW_EINVAL, "gw_chain_run_check: %s is NULL", !p ? "p" : "o");
+    /* the column first, as gw_chain_create checks it before gw_chain_collide
+     * plans: the plan's bounds read v_imp at the column's speed scale, and an
+     * infinite v_imp (or mass, k, ...) passed them */
+    int rc = gw_chain_params_validate(p, err);
+    if (rc != GW_OK)
+        return rc;
     collide_plan pl;
     return chain_collide_plan_make(p, o, &pl, err);
 }

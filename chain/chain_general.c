@@ -246,6 +246,13 @@ double gw_chain_wall_contact_force(const gw_chain *c, const double *y)
         return NAN;
     if (!c->general)
         return gw_chain_wall_force(c, y);
+    /* a NaN overlap, rate, largest overlap or Maxwell arm: NaN (the open
+     * contact's 0 N was returned, a plausible force) */
+    if (isnan(wall_overlap(c, y)) || isnan(wall_overlap_rate(c, y)) || (c->wl.plastic && isnan(wall_dmax(c, y))))
+        return NAN;
+    for (int j = 0; j < c->wl.narms; j++)
+        if (isnan(y[c->i_q + j]))
+            return NAN;
     double kd, kv, pd = 0.0;
     return chain_general_wall_force(c, y, &kd, &kv, &pd);
 }

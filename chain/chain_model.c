@@ -911,6 +911,9 @@ double gw_chain_wall_force(const gw_chain *c, const double *y)
         return gw_chain_wall_contact_force(c, y);
     }
     double x = y[0];
+    /* a NaN state is no state: NaN, never the open contact's plausible 0 N */
+    if (isnan(x) || isnan(y[1]))
+        return NAN;
     if (!(x > 0))
         return 0.0;
     if (c->p.damping == GW_DAMP_NONE)
@@ -942,6 +945,13 @@ void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
         e->kinetic = e->elastic = e->gravity = e->dissipated = e->total = NAN;
         return;
     }
+    /* a NaN anywhere in the state: every energy NaN (a NaN overlap fell to the
+     * open contact's 0 J, the elastic energy then plausible) */
+    for (long i = 0; i < c->sys.dim; i++)
+        if (isnan(y[i])) {
+            e->kinetic = e->elastic = e->gravity = e->dissipated = e->total = NAN;
+            return;
+        }
     if (c->general) {
         chain_general_energy(c, y, e);
         return;

@@ -677,6 +677,14 @@ static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_ru
         gw_solver_params sp = o->sp;
         chain_chatter_rerun(o->solver ? o->solver : gw_solver_cvode, r->run_dt, &sp, how, sizeof how, flags,
                             sizeof flags);
+    } else if (r->chatter_rerun < GW_CHAIN_RERUN_NONE || r->chatter_rerun > GW_CHAIN_RERUN_STEP) {
+        /* a result filled by hand whose chatter_rerun is none of
+         * GW_CHAIN_RERUN_*: it was worded with the tolerances' rule (99,
+         * INT_MIN), a rerun the result does not record */
+        gw_snprintf(how, sizeof how, "a setting the result does not name (its chatter_rerun, %d, is invalid)",
+                    r->chatter_rerun);
+        gw_snprintf(flags, sizeof flags, "another setting (the result's chatter_rerun, %d, is invalid)",
+                    r->chatter_rerun);
     } else if (step && r->run_dt > 0 && isfinite(r->run_dt)) {
         gw_solver_params sp = gw_solver_params_default();
         chain_chatter_rerun(gw_solver_rk4, r->run_dt, &sp, how, sizeof how, flags, sizeof flags);

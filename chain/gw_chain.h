@@ -340,12 +340,13 @@ typedef struct gw_chain_energy {
  * viscoelastic wall the work done on the wall is integrated as a state; its part
  * still stored in the wall is counted as elastic, the rest as dissipated (their
  * sum, and so the total, is exact). The sensor's kinetic and spring energies are
- * in kinetic and elastic. */
+ * in kinetic and elastic. A state holding a NaN gives NaN in every member. */
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e);
 /* Force the sensor reads (N) in state y: the contact force on a rigid sensor,
- * the force through the sensor's spring and dashpot when it is a body. */
+ * the force through the sensor's spring and dashpot when it is a body. NaN for
+ * a NaN in the states it reads (never the open contact's 0). */
 double gw_chain_wall_force(const gw_chain *c, const double *y);
-/* Force of the bead-wall contact (N). */
+/* Force of the bead-wall contact (N); NaN for a NaN in the states it reads. */
 double gw_chain_wall_contact_force(const gw_chain *c, const double *y);
 /* The wall contact's opening function (> 0 while closed): x_0 - x_s, less the
  * residual dent of a plastic wall. y[0] for the default wall. */
@@ -605,8 +606,10 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
 #define GW_CHAIN_MEMORY_MAX 2147483648.0
 int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err);
 /* Every bound gw_chain_collide checks before its run, in order, from p and o
- * alone (nothing allocated): samples (dt-out), the stored trace, steps (dt or
- * dt-max), memory (n). GW_OK or GW_EINVAL naming the parameter. */
+ * alone (nothing allocated): the column itself (gw_chain_params_validate, as
+ * gw_chain_create checks it: v_imp inf passed before session 48), samples
+ * (dt-out), the stored trace, steps (dt or dt-max), memory (n). GW_OK or
+ * GW_EINVAL naming the parameter. */
 int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err);
 /* Write DIR/<stem>_wall_force.csv and DIR/<stem>_beads.csv (and DIR/<stem>.h5 when
  * built with HDF5); header lines record version and parameters. A trace with

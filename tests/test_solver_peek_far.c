@@ -31,7 +31,11 @@
  * about 120 steps after the first, is GW_ELIMIT with a message naming the
  * limit, the sample disarmed; the next advance gives the return held back at
  * 0.2 s (GW_OK, within 1e-7 of cos(w t)). Before, it returned GW_SOLVER_PEEK,
- * read over the steps left. 8 of the 24 checks fail on the code before.
+ * read over the steps left. Then a root at 0.21 s (a second root function,
+ * g = t - 0.21) is returned, and the call after it, of many steps towards
+ * 0.26 s, keeps its ends again: samples at 0.2123 s and 0.2173 s within
+ * 1e-7 (the limit reached in the call before does not carry over).
+ * 8 of the 27 checks fail on the code before.
  */
 #include <math.h>
 #include <stdio.h>
@@ -63,6 +67,15 @@ static int osc_roots(double t, const double *y, double *g, void *P)
     return 0;
 }
 
+/* osc_roots and a root at TROOT (the limit's case) */
+#define TROOT 0.21
+static int osc_roots2(double t, const double *y, double *g, void *P)
+{
+    osc_roots(t, y, g, P);
+    g[1] = t - TROOT;
+    return 0;
+}
+
 static double peek_time(int i)
 {
     return i == 0 ? 0.0123 : 0.05 * i;
@@ -86,8 +99,8 @@ static gw_solver *make(const gw_solver_type *type, int method, int roots, long d
     gw_system sys = {0};
     sys.dim = dim;
     sys.rhs = osc_rhs;
-    sys.roots = roots ? osc_roots : NULL;
-    sys.nroots = roots ? 1 : 0;
+    sys.roots = roots == 2 ? osc_roots2 : roots ? osc_roots : NULL;
+    sys.nroots = roots;
     sys.params = &n;
     gw_solver_params sp = gw_solver_params_default();
     sp.rtol = 1e-8;
@@ -173,6 +186,63 @@ static void check(const char *name, const gw_solver_type *type, int method, int 
                TOUT, b.rc_end, a.rc_end, b.y_end[0], a.y_end[0]);
 }
 
+/* One advance to tout with the sample p armed (0: none): its return, time
+ * and y[0]; the message into msg on a failure. */
+static int step_to(gw_solver *s, double p, double tout, double *t, double *y, char *msg, size_t len)
+{
+    gw_solver_set_peek(s, p);
+    const int rc = gw_solver_advance(s, tout, t, y, NULL);
+    if (rc < 0)
+        snprintf(msg, len, "%s", gw_solver_error(s));
+    return rc;
+}
+
+/* The limit: 2^20 components under arkode erk, samples at 0.0123 s and
+ * 0.15 s (past the 16 ends kept) in its first call towards 0.2 s; then, after
+ * a root return at TROOT, a call of many steps towards 0.26 s with samples at
+ * 0.2123 s and 0.2173 s (a few steps apart: the ends kept again, the earlier
+ * call's limit not carried over). */
+static void check_limit(void)
+{
+    const long big = 1L << 20;
+    const double t1 = 0.2, t2 = 0.26; /* (about 170 and 50 steps) */
+    double *y = NULL, t = 0;
+    char msg[512] = "";
+    gw_solver *s = make(gw_solver_arkode, GW_ARKODE_ERK, 2, big, t1, &y);
+    if (!s) {
+        free(y);
+        gw_test_true(0, "the large run ran");
+        return;
+    }
+    int rc = step_to(s, 0.0123, t1, &t, y, msg, sizeof msg);
+    GW_TEST_OK(rc == GW_SOLVER_PEEK && t == 0.0123 && fabs(y[0] - cos(W * t)) < 1e-7,
+               "2^20 components: the first sample answered (rc %d at %g, %s)", rc, t, msg);
+    rc = step_to(s, 0.15, t1, &t, y, msg, sizeof msg);
+    GW_TEST_OK(rc == GW_ELIMIT && t == 0.0123, "2^20 components: the sample at 0.15 s GW_ELIMIT (rc %d, t %g)", rc,
+               t);
+    GW_TEST_OK(strstr(msg, "256 MiB") && strstr(msg, "GW_SUN_PEEK_END_BYTES"),
+               "2^20 components: the message names the limit (%s)", msg);
+    rc = step_to(s, 0, t1, &t, y, msg, sizeof msg);
+    GW_TEST_OK(rc == GW_OK && t == t1 && fabs(y[0] - cos(W * t1)) < 1e-7,
+               "2^20 components: the return held back at %g s then given (rc %d at t = %.17g, y off by %.3g)", t1, rc,
+               t, fabs(y[0] - cos(W * t1)));
+    rc = step_to(s, 0.2123, t2, &t, y, msg, sizeof msg);
+    const int root = rc == GW_ROOT && fabs(t - TROOT) < 1e-9;
+    rc = step_to(s, 0.2123, t2, &t, y, msg, sizeof msg);
+    double err = fabs(y[0] - cos(W * t));
+    int ok = root && rc == GW_SOLVER_PEEK && t == 0.2123;
+    rc = step_to(s, 0.2173, t2, &t, y, msg, sizeof msg);
+    ok = ok && rc == GW_SOLVER_PEEK && t == 0.2173;
+    err = fmax(err, fabs(y[0] - cos(W * t)));
+    GW_TEST_OK(ok && err < 1e-7,
+               "2^20 components: after the root at %g s, samples at 0.2123 and 0.2173 s answered within 1e-7 "
+               "(root %d, rc %d at %g, off by %.3g; %s)", TROOT, root, rc, t, err, rc < 0 ? msg : "");
+    rc = step_to(s, 0, t2, &t, y, msg, sizeof msg);
+    GW_TEST_OK(rc == GW_OK && t == t2, "2^20 components: then the return at %g s (rc %d at %.17g)", t2, rc, t);
+    gw_solver_free(s);
+    free(y);
+}
+
 int main(void)
 {
     check("cvode bdf", gw_solver_cvode, GW_CVODE_BDF, 1, 1e-5);
@@ -183,21 +253,6 @@ int main(void)
     check("arkode erk", gw_solver_arkode, GW_ARKODE_ERK, 0, 1e-7); /* (control) */
     check("arkode dirk", gw_solver_arkode, GW_ARKODE_DIRK, 1, 2e-2);
 
-    /* the limit: the first sample, then one at 0.15 s, past the 16 ends kept */
-    static run_rec r;
-    const long big = 1L << 20;
-    const double tout = 0.2; /* (about 170 steps) */
-    if (run(gw_solver_arkode, GW_ARKODE_ERK, 1, big, tout, 1, 3, &r) != 0) {
-        gw_test_true(0, "the large run ran");
-    } else {
-        GW_TEST_OK(r.peeks == 1 && r.fail_rc == GW_ELIMIT && r.fail_t == peek_time(3),
-                   "2^20 components: the first sample answered, the one at %g s GW_ELIMIT (%d answered, rc %d at "
-                   "%g)", peek_time(3), r.peeks, r.fail_rc, r.fail_t);
-        GW_TEST_OK(strstr(r.msg, "256 MiB") && strstr(r.msg, "GW_SUN_PEEK_END_BYTES"),
-                   "2^20 components: the message names the limit (%s)", r.msg);
-        GW_TEST_OK(r.rc_end == GW_OK && r.t_end == tout && fabs(r.y_end[0] - cos(W * tout)) < 1e-7,
-                   "2^20 components: the return held back at %g s then given (rc %d at t = %.17g, y off by %.3g)",
-                   tout, r.rc_end, r.t_end, fabs(r.y_end[0] - cos(W * tout)));
-    }
+    check_limit();
     return gw_test_summary("test_solver_peek_far");
 }

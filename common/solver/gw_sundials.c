@@ -682,7 +682,7 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
                 break;
             }
             double tret = *k->t;
-            k->want = p, k->got = 0, k->rec = normal, k->nend = 0;
+            k->want = p, k->got = 0, k->rec = normal, k->nend = 0, k->lost = 0;
             flag = st->evolve(s, tout, &tret, !normal);
             k->want = 0, k->rec = 0;
             k->tlast = tret;

@@ -25,6 +25,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <fcntl.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -77,26 +78,27 @@ static int put(hid_t file, const char *name, const double *data, hsize_t rows, h
     return bad;
 }
 
-int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
-                             gw_err *err)
+/* The ledger is written as it is held: gw_layer_energy is its 8 columns,
+ * in order, as 8 doubles (it was copied into an array of ns x 8 first: 8 MB
+ * more at 130,000 samples) */
+_Static_assert(sizeof(gw_layer_energy) == 8 * sizeof(double) && offsetof(gw_layer_energy, total) == 7 * sizeof(double),
+               "gw_layer_energy: 8 doubles, total last");
+
+/* The file of r; with take (r itself), each of r's series freed once it is in
+ * the file's image (layer_impact_write_h5_release). */
+static int write_h5(const gw_layer_impact_result *r, gw_layer_impact_result *take, const char *path,
+                    const char *header, gw_err *err)
 {
     if (!r || !path)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_write_h5: %s is NULL", !r ? "res" : "path");
     if (layer_result_shape(r, 1, err) != GW_OK)
         return GW_EINVAL;
     const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings, nf = r->xcorr_delay ? (size_t)r->spec_len : 0;
-    double *led = malloc((8 * ns + nf + 1) * sizeof *led);
-    if (!led)
+    double *freq = malloc((nf + 1) * sizeof *freq);
+    if (!freq)
         return gw_err_set(err, GW_ENOMEM, "impact.h5: out of memory");
-    double *freq = led + 8 * ns;
     for (size_t l = 0; l < nf; l++)
         freq[l] = (double)l * r->spec_df;
-    for (size_t k = 0; k < ns; k++) {
-        const gw_layer_energy *e = &r->ledger[k];
-        double v[8] = {e->kinetic_block, e->kinetic_soil, e->strain_normal, e->strain_tangent,
-                       e->mindlin_excess, e->dissipated, e->potential, e->total};
-        memcpy(led + 8 * k, v, sizeof v);
-    }
     /* our message names the file; HDF5's own error stack would add dozens of lines */
     gw_h5_section sec; /* HDF5 and its error handler, one thread at a time (gw_h5.h) */
     gw_h5_enter(&sec, NULL, NULL);
@@ -105,15 +107,24 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     int bad = file < 0;
     if (!bad) {
         bad = put(file, "t", r->t, ns, 0, "s", NULL) ||
-              put(file, "ledger", led, ns, 8, "J",
+              put(file, "ledger", (const double *)(const void *)r->ledger, ns, 8, "J",
                   "kinetic_block,kinetic_soil,strain_normal,strain_tangent,mindlin_excess,"
                   "dissipated,potential,total") ||
-              put(file, "block", r->block, ns, 4, "m, m, m/s, m/s", "x,y,vx,vy") ||
-              put(file, "ring_strain", r->ring_strain, ns, nr, "J", NULL) ||
+              put(file, "block", r->block, ns, 4, "m, m, m/s, m/s", "x,y,vx,vy");
+        if (take) { /* in the image now */
+            free(take->t), free(take->ledger), free(take->block);
+            take->t = NULL, take->ledger = NULL, take->block = NULL;
+        }
+        bad = bad || put(file, "ring_strain", r->ring_strain, ns, nr, "J", NULL) ||
               put(file, "ring_kinetic", r->ring_kin, ns, nr, "J", NULL) ||
               put(file, "ring_dissipated", r->ring_diss, ns, nr, "J", NULL) ||
-              put(file, "ring_coordination", r->ring_coord, ns, nr, "contacts per particle", NULL) ||
-              put(file, "ring_r", r->ring_r, nr, 0, "m", NULL) ||
+              put(file, "ring_coordination", r->ring_coord, ns, nr, "contacts per particle", NULL);
+        if (take) { /* one block, owned by ring_kin */
+            free(take->ring_kin);
+            take->ring_kin = take->ring_strain = take->ring_coord = take->ring_diss = NULL;
+            take->ns = take->cap = 0;
+        }
+        bad = bad || put(file, "ring_r", r->ring_r, nr, 0, "m", NULL) ||
               put(file, "peak_strain_t", r->peak_strain_t, nr, 0, "s", NULL) ||
               put(file, "peak_kinetic_t", r->peak_kin_t, nr, 0, "s", NULL) ||
               put_string_attr(file, "run", header ? header : "") ||
@@ -138,7 +149,7 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
                   put(file, "spec_strain", r->spec_strain, nf, nr, "J^2/Hz", NULL) ||
                   put(file, "spec_kinetic", r->spec_kin, nf, nr, "J^2/Hz", NULL);
     }
-    free(led);
+    free(freq);
     int rc = GW_OK;
     if (bad) {
         int nomem = mem.nomem;
@@ -152,6 +163,17 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     gw_h5_leave(&sec);
     return rc;
 }
+
+int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
+                             gw_err *err)
+{
+    return write_h5(r, NULL, path, header, err);
+}
+
+int layer_impact_write_h5_release(gw_layer_impact_result *r, const char *path, const char *header, gw_err *err)
+{
+    return write_h5(r, r, path, header, err);
+}
 #else
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
                              gw_err *err)
@@ -160,5 +182,10 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_write_h5: %s is NULL", !r ? "res" : "path");
     (void)r, (void)header;
     return gw_err_set(err, GW_EUNSUPPORTED, "%s: this build has no HDF5", path);
+}
+
+int layer_impact_write_h5_release(gw_layer_impact_result *r, const char *path, const char *header, gw_err *err)
+{
+    return gw_layer_impact_write_h5(r, path, header, err);
 }
 #endif

@@ -58,6 +58,13 @@ int layer_crowns_warning_kinds(const gw_layer_sample *smp, const gw_layer_impact
  * the speed, the sampling resolving it), their values read into c[3] and
  * err[3]: layer_crowns_warning says so (layer_crowns.c). */
 unsigned layer_crowns_imprecise(const gw_layer_impact_result *r, double c[3], double err[3]);
+/* gw_layer_impact_write_h5, freeing r's series (t, ledger, block and the
+ * rings' block) once each is in the file's in-memory image, r->ns and r->cap
+ * then 0; r's scalars, peaks, crowns and spectra are kept. For a caller done
+ * with the series (the program's --out: its CSVs written before, nothing
+ * read of them after): the image holds the same numbers, and with the series
+ * kept whole the write held them twice. Freed also after a failure. */
+int layer_impact_write_h5_release(gw_layer_impact_result *r, const char *path, const char *header, gw_err *err);
 
 /* A warning into *list when res's energy error is above GW_LAYER_ENERGY_WARN
  * while ip's energy_tol is off (0), naming it and the solver's rtol and atol

@@ -161,8 +161,11 @@ void gw_layer_impact_plan_free(gw_layer_impact_plan *p);
 
 /* What gw_layer_impact_run checks before it runs: the rows, the sample (read
  * and checked), the resolution against it (options without effect in the
- * combination refused). GW_OK or the status gw_layer_impact_run would return
- * before running. */
+ * combination refused), and the single run's refusals of other-settling and
+ * zero-springs of no effect on that sample (since session 48: they passed
+ * here, and the run refused them). GW_OK or the status gw_layer_impact_run
+ * would return before running. A sweep's case keeps those two flags where
+ * idle (gw_layer_sweep_model's check). */
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err);
 
 /* ---- pluviation (physics.md 2.2) ---- */

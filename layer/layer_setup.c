@@ -601,10 +601,23 @@ int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_lay
     return resolve(s, smp, &lp, &ip, &type, &sp, memo, NULL, err);
 }
 
-int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
+int layer_impact_setup_check_case(const gw_layer_impact_setup *s, gw_err *err)
 {
     gw_layer_impact_plan p;
     int rc = gw_layer_impact_plan_make(s, &p, err);
+    gw_layer_impact_plan_free(&p);
+    return rc;
+}
+
+int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
+{
+    /* the single run's refusals too, as gw_layer_impact_run's: other-settling
+     * and zero-springs of no effect on the sample passed this check (and
+     * Python's layer_impact_check), which the run then refused */
+    gw_layer_impact_plan p;
+    int rc = gw_layer_impact_plan_make(s, &p, err);
+    if (rc == GW_OK)
+        rc = single_run_idle_check(s, &p, err);
     gw_layer_impact_plan_free(&p);
     return rc;
 }

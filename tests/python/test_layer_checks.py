@@ -148,6 +148,35 @@ def test_layer_impact_check_sample_form_and_file(program, overlapping, tmp_path)
     assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
 
 
+# the single run's refusals of two flags of no effect on the sample (session
+# 48: layer_impact_check passed them, gw_layer_impact_setup_check had them
+# not, and layer_impact and the program refused them)
+IDLE_FLAGS = [
+    ("restitution", {"other_settling": True}),  # no settings line to compare with
+    ("restitution", {"zero_springs": True}),    # no springs
+    ("made", {"other_settling": True}),         # settled under the impact's own material
+]
+
+
+@pytest.mark.parametrize("which,flags", IDLE_FLAGS, ids=lambda x: x if isinstance(x, str) else ",".join(x))
+def test_layer_impact_check_single_run_flags(program, sample, which, flags):
+    kw = dict(sample=SAMPLE if which == "restitution" else str(sample), t_max=1e-5, **flags)
+    checked = _raised(granwave.layer_impact_check, **kw)
+    assert isinstance(checked, granwave.GranwaveValueError) and "has no effect" in str(checked)
+    ran = _raised(granwave.layer_impact, **kw)
+    assert type(ran) is type(checked) and str(ran) == str(checked)
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+    # a sweep's case keeps them (a grid's key acts on its other samples)
+    assert granwave.sweep_case_check("layer", **kw) is None
+
+
+def test_layer_impact_check_single_run_flags_acting(sample):
+    # where the flags act, the check passes: the made pile carries springs,
+    # and under another shear modulus its recorded settling differs
+    assert granwave.layer_impact_check(sample=str(sample), zero_springs=True) is None
+    assert granwave.layer_impact_check(sample=str(sample), other_settling=True, shear_modulus=4e9) is None
+
+
 def test_layer_impact_check_passes_and_keywords():
     assert granwave.layer_impact_check(sample=SAMPLE) is None
     assert granwave.layer_impact_check(sample=SAMPLE, solver="cvode", rtol=1e-6) is None

@@ -161,9 +161,23 @@ void gw_layer_impact_plan_free(gw_layer_impact_plan *p);
 
 /* What gw_layer_impact_run checks before it runs: the rows, the sample (read
  * and checked), the resolution against it (options without effect in the
- * combination refused). GW_OK or the status gw_layer_impact_run would return
- * before running. */
+ * combination refused), and the single run's refusals of other-settling and
+ * zero-springs of no effect on that sample (since session 48: they passed
+ * here, and the run refused them). GW_OK or the status gw_layer_impact_run
+ * would return before running. A sweep's case keeps those two flags where
+ * idle (gw_layer_sweep_model's check). */
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err);
+/* The settling verdict gw_layer_impact_run takes on s's sample under s's
+ * material, without running: gw_layer_impact_setup_check's checks first (its
+ * refusals, the same status and message), then *q (may be NULL) the load
+ * ratio the sample's contacts carry under that material against at rest
+ * (gw_layer_settled_load_ratio; NaN when the sample records no settling) and
+ * warning (n bytes; may be NULL with n 0) the warning the run's result
+ * carries (gw_layer_impact_result.settling, gw_layer_impact_settled_check's:
+ * "" when none). On failure *q is NaN and warning "". GW_EINVAL for s NULL,
+ * or warning NULL with n > 0. */
+int gw_layer_impact_setup_settling(const gw_layer_impact_setup *s, double *q, char *warning, size_t n,
+                                   gw_err *err);
 
 /* ---- pluviation (physics.md 2.2) ---- */
 

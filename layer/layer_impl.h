@@ -795,6 +795,10 @@ int layer_settling_verdict_found(const gw_layer_sample *smp, const gw_layer_para
  * memo (may be NULL: found here). The reader's check is the shared sample
  * check (layer_sample_limits_check): the resolution does not take it again. */
 struct gw_layer_impact_setup;
+/* gw_layer_impact_setup_check as a sweep's case takes it: without the
+ * single run's refusals of other-settling and zero-springs of no effect on
+ * the sample (a grid's key acts on its other samples). */
+int layer_impact_setup_check_case(const struct gw_layer_impact_setup *s, gw_err *err);
 int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
                                     layer_settling_memo *memo, gw_err *err);
 

@@ -601,12 +601,47 @@ int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_lay
     return resolve(s, smp, &lp, &ip, &type, &sp, memo, NULL, err);
 }
 
-int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
+int layer_impact_setup_check_case(const gw_layer_impact_setup *s, gw_err *err)
 {
     gw_layer_impact_plan p;
     int rc = gw_layer_impact_plan_make(s, &p, err);
     gw_layer_impact_plan_free(&p);
     return rc;
+}
+
+int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
+{
+    /* the single run's refusals too, as gw_layer_impact_run's: other-settling
+     * and zero-springs of no effect on the sample passed this check (and
+     * Python's layer_impact_check), which the run then refused */
+    gw_layer_impact_plan p;
+    int rc = gw_layer_impact_plan_make(s, &p, err);
+    if (rc == GW_OK)
+        rc = single_run_idle_check(s, &p, err);
+    gw_layer_impact_plan_free(&p);
+    return rc;
+}
+
+int gw_layer_impact_setup_settling(const gw_layer_impact_setup *s, double *q, char *warning, size_t n,
+                                   gw_err *err)
+{
+    if (q)
+        *q = NAN;
+    if (warning && n > 0)
+        warning[0] = '\0';
+    if (!s || (!warning && n > 0))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_setup_settling: %s is NULL", !s ? "s" : "warning");
+    layer_settling_found found = {.q = NAN};
+    gw_layer_impact_plan p;
+    const int rc = layer_impact_plan_make_found(s, &p, &found, err); /* the single run's checks too */
+    gw_layer_impact_plan_free(&p);
+    if (rc != GW_OK)
+        return rc;
+    if (q)
+        *q = found.q;
+    if (warning && n > 0)
+        gw_snprintf(warning, n, "%s", found.warning);
+    return GW_OK;
 }
 
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err)

@@ -412,7 +412,7 @@ static void memo_free(void *memo)
     free(c);
 }
 
-/* gw_layer_impact_setup_check of s, through the memo *memo (NULL: none; *memo
+/* layer_impact_setup_check_case of s (a sweep case's setup check), through the memo *memo (NULL: none; *memo
  * NULL: made here, on the first sample read; out of memory for it: the check
  * without it). *width and *hash get the sample's box width and content hash
  * whenever the memo had it or the check read it, kept or not (a sample above
@@ -436,7 +436,7 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, double *widt
     if (frc == GW_ENOMEM) /* (not checked again without the memo: its tally lost the case) */
         return gw_err_set(err, GW_ENOMEM, "%s", e.msg[0] ? e.msg : "out of memory");
     if (frc != GW_OK)
-        return gw_layer_impact_setup_check(s, err); /* its own message for a missing or odd file */
+        return layer_impact_setup_check_case(s, err); /* its own message for a missing or odd file */
     memo_slot *old = &c->slot[0];
     for (int k = 0; k < MEMO_SLOTS; k++) {
         memo_slot *m = &c->slot[k];

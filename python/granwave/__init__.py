@@ -48,7 +48,8 @@ for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported
 
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
            "layer_make", "layer_impact", "layer_stats", "sweep", "sweep_n", "params", "library_path",
-           "layer_impact_check", "layer_make_check", "sweep_case_check", "sweep_check",
+           "layer_impact_check", "layer_impact_settling", "layer_make_check", "sweep_case_check",
+           "sweep_check",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported", "GranwaveWarning"]
 
@@ -220,6 +221,18 @@ def layer_impact_check(**kwargs):
     run would start; else raises what layer_impact raises, with its text (the
     library's message, inputs named by their keywords). Nothing is written."""
     _checks.layer_impact_check(_study("layer-impact"), kwargs)
+
+
+def layer_impact_settling(**kwargs):
+    """The sample's settling as layer_impact(**kwargs) would take it, without
+    running (gw_layer_impact_setup_settling): layer_impact_check's refusals
+    first (a pile not at rest under the given material, other_settling of no
+    effect), then a dict: load_ratio, the weight the pile's contacts carry
+    under the impact's material against at rest (1: the material it settled
+    with; NaN when the sample records no settling), and warning, the settling
+    warning layer_impact's result would list (None when none), its inputs
+    named by their keywords. Nothing is run or written."""
+    return _checks.layer_impact_settling(_study("layer-impact"), kwargs)
 
 
 def layer_make_check(**kwargs):

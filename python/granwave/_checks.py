@@ -17,6 +17,8 @@ from ._lib import lib
 from ._values import _line, _show, _texts
 
 _lib._declare("gw_layer_impact_setup_check", ctypes.c_int, ctypes.c_void_p, ctypes.POINTER(_lib.GwErr))
+_lib._declare("gw_layer_impact_setup_settling", ctypes.c_int, ctypes.c_void_p, ctypes.POINTER(ctypes.c_double),
+              ctypes.c_char_p, ctypes.c_size_t, ctypes.POINTER(_lib.GwErr))
 _lib._declare("gw_layer_make_plan", ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p,
               ctypes.POINTER(_lib.GwErr))
 _lib._declare("gw_sweep_case_check_pass", ctypes.c_int, ctypes.POINTER(_lib.GwSweepModel), ctypes.c_int,
@@ -44,6 +46,19 @@ def layer_impact_check(study, kwargs):
     # (gw_layer_impact_check_with's side walls, the rest and settled checks,
     # the gap and step checks): what gw_layer_impact_run refuses before it runs
     _setup_check(study, kwargs, lambda buf, err: lib.gw_layer_impact_setup_check(buf, ctypes.byref(err)))
+
+
+def layer_impact_settling(study, kwargs):
+    # gw_layer_impact_setup_settling: layer_impact_check's checks, then the
+    # settling verdict the run takes (the load ratio, the result's warning)
+    from ._errors import keyword_text
+    q = ctypes.c_double()
+    w = ctypes.create_string_buffer(1024)
+    _setup_check(study, kwargs, lambda buf, err: lib.gw_layer_impact_setup_settling(
+        buf, ctypes.byref(q), w, len(w), ctypes.byref(err)))
+    text = w.value.decode(errors="replace")
+    return {"load_ratio": q.value,
+            "warning": keyword_text(text, study.names, _texts(kwargs.values())) if text else None}
 
 
 def layer_make_check(study, kwargs):

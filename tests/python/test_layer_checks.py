@@ -148,6 +148,68 @@ def test_layer_impact_check_sample_form_and_file(program, overlapping, tmp_path)
     assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
 
 
+# the single run's refusals of two flags of no effect on the sample (session
+# 48: layer_impact_check passed them, gw_layer_impact_setup_check had them
+# not, and layer_impact and the program refused them)
+IDLE_FLAGS = [
+    ("restitution", {"other_settling": True}),  # no settings line to compare with
+    ("restitution", {"zero_springs": True}),    # no springs
+    ("made", {"other_settling": True}),         # settled under the impact's own material
+]
+
+
+@pytest.mark.parametrize("which,flags", IDLE_FLAGS, ids=lambda x: x if isinstance(x, str) else ",".join(x))
+def test_layer_impact_check_single_run_flags(program, sample, which, flags):
+    kw = dict(sample=SAMPLE if which == "restitution" else str(sample), t_max=1e-5, **flags)
+    checked = _raised(granwave.layer_impact_check, **kw)
+    assert isinstance(checked, granwave.GranwaveValueError) and "has no effect" in str(checked)
+    ran = _raised(granwave.layer_impact, **kw)
+    assert type(ran) is type(checked) and str(ran) == str(checked)
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+    # a sweep's case keeps them (a grid's key acts on its other samples)
+    assert granwave.sweep_case_check("layer", **kw) is None
+
+
+def test_layer_impact_check_single_run_flags_acting(sample):
+    # where the flags act, the check passes: the made pile carries springs,
+    # and under another shear modulus its recorded settling differs
+    assert granwave.layer_impact_check(sample=str(sample), zero_springs=True) is None
+    assert granwave.layer_impact_check(sample=str(sample), other_settling=True, shear_modulus=4e9) is None
+
+
+def _run_warning(**kw):
+    """The settling warning layer_impact's result lists (None: none)."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = granwave.layer_impact(t_max=1e-4, **kw)
+    said = [w for w in r["warnings"] if w.startswith("the sample settled") or "not settled" in w]
+    return said[0] if said else None
+
+
+def test_layer_impact_settling(sample):
+    # session 48: the settling verdict the run takes (gw_layer_impact_settled_check's
+    # load ratio and warning), bound without a run; q = [G/(1 - nu)]_impact /
+    # [G/(1 - nu)]_settled x W_settled / W_impact (gw_layer.h), the made pile
+    # settled at G = 40 GPa, rho = 2650 kg/m^3
+    made = str(sample)
+    cases = [({}, 1.0), ({"shear_modulus": 3e10}, 0.75), ({"density": 2120}, 2650 / 2120),
+             ({"shear_modulus": 4e9, "other_settling": True}, 0.1)]
+    for kw, q in cases:
+        got = granwave.layer_impact_settling(sample=made, **kw)
+        assert got["load_ratio"] == pytest.approx(q, rel=1e-12), (kw, got)
+        assert got["warning"] == _run_warning(sample=made, **kw), (kw, got)
+        assert (got["warning"] is None) == (not kw)
+    # nothing recorded: NaN, no warning
+    got = granwave.layer_impact_settling(sample=SAMPLE)
+    assert math.isnan(got["load_ratio"]) and got["warning"] is None
+    # the refusals are layer_impact_check's (a pile far from rest, a flag of no effect)
+    for kw in ({"shear_modulus": 4e9}, {"other_settling": True}):
+        checked = _raised(granwave.layer_impact_check, sample=made, **kw)
+        got = _raised(granwave.layer_impact_settling, sample=made, **kw)
+        assert type(got) is type(checked) and str(got) == str(checked)
+
+
 def test_layer_impact_check_passes_and_keywords():
     assert granwave.layer_impact_check(sample=SAMPLE) is None
     assert granwave.layer_impact_check(sample=SAMPLE, solver="cvode", rtol=1e-6) is None
@@ -158,7 +220,8 @@ def test_layer_impact_check_passes_and_keywords():
     # the same keywords as layer_impact (but progress)
     run = [p for p in inspect.signature(granwave.layer_impact).parameters if p != "progress"]
     assert list(inspect.signature(granwave.layer_impact_check).parameters) == run
-    assert {"layer_impact_check", "layer_make_check", "sweep_case_check"} <= set(granwave.__all__)
+    assert {"layer_impact_check", "layer_make_check", "sweep_case_check", "layer_impact_settling",
+            "sweep_check"} <= set(granwave.__all__)
 
 
 MAKE_REFUSALS = [

@@ -1156,7 +1156,7 @@ static int rk4_dt_stiff(const gw_chain_params *q, const gw_chain_run_opts *o, co
 
 /* Bead 1's largest overlap on the wall (the closed form at v_imp) beyond its
  * radius: a wall too soft for the Hertz law it is given (kwall 1e-30 N/m^1.5:
- * 1.5e5 m), whose contact makes the collision as long as it likes (3.5e11 s).
+ * 3.6e10 m), whose contact makes the collision as long as it likes (3.5e11 s).
  * The one absolute scale of the column: the contacts' times and the step are
  * otherwise relative to each other (k 1e30 on the default wall is as far from
  * the wall as kwall 1e-30 on the default beads, and there k is the cause). */
@@ -1278,15 +1278,12 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
                     "quarter of the shortest contact", o->sp.dt);
     if (soft) {
         const double m0 = q.masses ? q.masses[0] : q.mass;
-        return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
-                          "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii%s and v_imp as given): at this "
-                          "kwall the wall's contact lasts %.3g s and the collision about %.3g s, and the step %s its "
-                          "shortest contact (%.3g s) needs about %.3g steps over %s: too soft a wall",
-                          k, lo, hi, p->n, p->k, type == gw_solver_rk4 && o->sp.dt > 0 ? ", the dt" : "",
-                          gw_chain_tau1(m0, k, q.v_imp), t_expect,
-                          type == gw_solver_rk4 && o->sp.dt > 0 ? "given or, at most, one resolving"
-                                                                : "chosen to resolve",
-                          tau, steps_of(&q, o, type), over);
+        return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where the run stays within "
+                          "1e+08 steps (%d beads, k %g N/m^1.5, the rest as given): too soft, bead 1 overlapping the "
+                          "wall by %.3g m for %.3g s, the step (at most a quarter of the shortest contact, %.3g s) "
+                          "needing about %.3g steps over %s",
+                          k, lo, hi, p->n, p->k, gw_chain_dmax1(m0, k, q.v_imp), gw_chain_tau1(m0, k, q.v_imp), tau,
+                          steps_of(&q, o, type), over);
     }
     if (wall)
         return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
@@ -1317,6 +1314,18 @@ static int stiffness_refusal(const gw_chain_params *p, const gw_chain_run_opts *
     /* a soft wall first: its contact sets the collision's length, which no k
      * or dt shortens */
     int rc = stiff_refusal(p, &od, type, 1, 1, over, &ek);
+    if (rc != GW_OK && type == gw_solver_rk4 && o->sp.dt > 0 && p->n > 1) {
+        /* and the bead contacts, where they cut the dt given (k 1e30 at dt
+         * 1e-9 on kwall 1e-30: both wrong, k named before the soft wall) */
+        gw_chain_params beads = *p;
+        beads.kwall = DBL_MIN;
+        const double tau_b = chain_contact_tau_min(&beads, 2 * p->v_imp);
+        if (0.25 * tau_b < o->sp.dt) {
+            const gw_err was = ek;
+            gw_err_set(&ek, rc, "%s; and %s: %g N/m^1.5 is too stiff for that dt (its contact %.3g s, a quarter "
+                       "below the dt)", was.msg, p->kc ? "kc" : "k", p->k, tau_b);
+        }
+    }
     if (rc == GW_OK && !wall_only)
         rc = stiff_refusal(p, &od, type, 0, 0, over, &ek);
     if (rc == GW_OK)

@@ -212,6 +212,12 @@ static int sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, 
     return study_steps_check(tmpl, o, v, nv, n_lo, n_hi, err);
 }
 
+int chain_sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                      int n_hi, gw_chain_result *res, gw_err *err)
+{
+    return sweep_check(tmpl, o, v, nv, n_lo, n_hi, res, err);
+}
+
 /* the grid's cases, checked */
 static int sweep_cases(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
                        int n_hi, int jobs, gw_progress_fn progress, void *pctx, chain_watch *watch,

@@ -103,6 +103,11 @@ void chain_watch_end(chain_watch_running *run, int ok);
  * w from the calling thread; p the column's parameters as planned. */
 int chain_watch_collide(chain_watch *w, const gw_chain *c, const gw_chain_params *p, const gw_chain_run_opts *o,
                         gw_chain_result *r, gw_err *err);
+/* chain_sweep_watch's checks alone (nothing run; res zeroed once the grid's
+ * shape passed): a study that runs columns of its own before the sweep
+ * (wavespeed's front columns) refuses what the sweep would first. */
+int chain_sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                      int n_hi, gw_chain_result *res, gw_err *err);
 /* The sweep of gw_chain_sweep_n_progress reporting to w (may be NULL; its
  * collisions planned by the caller). */
 int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,

@@ -14,7 +14,7 @@
  *     tolerances' rule ("compare a run at 10 times tighter --rtol and
  *     --atol"): it says the value is invalid.
  *   - rk4 with a dt given on a wall too soft (kwall 1e-30, bead 1 overlapping
- *     it by 1.5e5 m): "dt: ... raise it", which cannot help (rk4's step is at
+ *     it by 3.6e10 m): "dt: ... raise it", which cannot help (rk4's step is at
  *     most a quarter of the bead contact, still 5e16 steps); with dt 1e-15
  *     and k 1e30 too, kwall was not named. kwall is named now, with its
  *     range; a dt that raising cannot help alone is said so; a dt that it can

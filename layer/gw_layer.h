@@ -727,7 +727,7 @@ typedef struct gw_layer_impact_result {
     int n_mobile, n_frozen;
     gw_layer_stats stats;
     /* series */
-    int ns, cap;
+    int ns, cap;            /* samples held; room for (grown by the run, up to ceil(t_max / dt_out) + 2) */
     double *t;              /* [ns] */
     gw_layer_energy *ledger;/* [ns] */
     double *block;          /* [ns * 4]: x, y, vx, vy */

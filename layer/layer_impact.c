@@ -805,6 +805,14 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
     return GW_OK;
 }
 
+/* The series' first room: SERIES_CAP0 samples (or cap_max when fewer), grown
+ * by series_room as the run goes. They were reserved whole up front, ceil(t_max
+ * / dt_out) + 2 samples: --t-max 40 at the default dt-out reserved 2,000,002
+ * samples (0.98 GB at 12 rings) and failed under ulimit -v 800000 ("out of
+ * memory for 2000002 samples") a run on the pile of `layer-make --n 40` under
+ * --gravity 0.5 that stops at 2.6 s, 130,000 samples. */
+#define SERIES_CAP0 4096
+
 static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
 {
     r->cap = cap;
@@ -824,6 +832,48 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
         return GW_ENOMEM;
     r->peak_kin_t = r->peak_strain_t + nr;
     r->ring_r = r->peak_strain_t + 2 * nr;
+    return GW_OK;
+}
+
+/* Room for one more sample in r's series: when full, their room doubled, up to
+ * cap_max (the run's ceil(t_max / dt_out) + 2 samples, which the parameters'
+ * check bounds: gw_layer_impact_check). The rings' four series stay one block
+ * owned by ring_kin (gw_layer_impact_result_free, layer_h5.c), each at its
+ * offset of cap samples: strain, coordination and dissipation move up to
+ * theirs, the highest first. GW_ENOMEM when the room cannot grow; r is then
+ * as it was (each array grown so far is larger, not shorter, than r->cap
+ * says), its samples kept, for the caller to free; GW_ELIMIT when r holds
+ * cap_max samples already. */
+static int series_room(gw_layer_impact_result *r, int cap_max)
+{
+    if (r->ns < r->cap)
+        return GW_OK;
+    if (r->cap >= cap_max)
+        return GW_ELIMIT; /* not reached: a run takes at most cap_max samples */
+    const int cap = r->cap > cap_max / 2 ? cap_max : 2 * r->cap;
+    const size_t nr = (size_t)r->nrings, n = (size_t)r->ns, old = (size_t)r->cap, nc = (size_t)cap;
+    double *t = realloc(r->t, nc * sizeof *t);
+    if (!t)
+        return GW_ENOMEM;
+    r->t = t;
+    gw_layer_energy *ledger = realloc(r->ledger, nc * sizeof *ledger);
+    if (!ledger)
+        return GW_ENOMEM;
+    r->ledger = ledger;
+    double *block = realloc(r->block, 4 * nc * sizeof *block);
+    if (!block)
+        return GW_ENOMEM;
+    r->block = block;
+    double *rings = realloc(r->ring_kin, 4 * nc * nr * sizeof *rings);
+    if (!rings)
+        return GW_ENOMEM;
+    for (size_t a = 3; a >= 1; a--)
+        memmove(rings + a * nc * nr, rings + a * old * nr, n * nr * sizeof *rings);
+    r->ring_kin = rings;
+    r->ring_strain = rings + nc * nr;
+    r->ring_coord = rings + 2 * nc * nr;
+    r->ring_diss = rings + 3 * nc * nr;
+    r->cap = cap;
     return GW_OK;
 }
 
@@ -1188,13 +1238,15 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
         gw_layer_free(L);
         return rc;
     }
-    int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
+    /* the run's samples at most; their room grows as it goes (series_room) */
+    const int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
     double *strain0 = malloc((size_t)ip->nrings * 3 * sizeof *strain0);
-    if (!strain0 || alloc_series(res, cap, ip->nrings) != GW_OK) {
+    if (!strain0 || alloc_series(res, cap < SERIES_CAP0 ? cap : SERIES_CAP0, ip->nrings) != GW_OK) {
         free(strain0);
         gw_layer_free(L);
         gw_layer_impact_result_free(res);
-        return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for %d samples", cap);
+        return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for %d samples", cap < SERIES_CAP0 ? cap
+                          : SERIES_CAP0);
     }
     for (int k = 0; k < ip->nrings; k++)
         res->ring_r[k] = (k + 0.5) * w;
@@ -1293,6 +1345,14 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
         if (rc != GW_OK)
             break;
         const double tnow = gw_layer_time(L); /* tk, or the check that ended the run */
+        if ((rc = series_room(res, cap)) != GW_OK) {
+            if (rc == GW_ENOMEM)
+                gw_err_set(err, rc, "layer-impact: out of memory for %d samples at t = %.9g s",
+                           res->cap > cap / 2 ? cap : 2 * res->cap, tnow);
+            else
+                gw_err_set(err, rc, "layer-impact: more than %d samples at t = %.9g s", cap, tnow);
+            break;
+        }
         record(res, L, n, w, strain0, !peeked);
         const size_t last = (size_t)(res->ns - 1) * (size_t)res->nrings;
         if (crowns_checks && jk >= 0 && crown_point(&crowns, res, &oc, L, jk, w, strain0, res->ring_kin + last,

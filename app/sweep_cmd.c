@@ -70,6 +70,9 @@ typedef struct sweep_run {
     int kept;
     gw_err kept_err;
     pthread_mutex_t lock; /* the journal: one row appended at a time; the progress lines */
+    /* the inputs' hashes from one case's check to the next (under the lock,
+     * or by the only writer, as the journal) */
+    gw_hash_memo inputs_memo;
     gw_cli_progress prog;
     atomic_long running;  /* cases under way (threads; under MPI handed out and not back) */
     /* Threads, with progress lines: the model's run that reports its part
@@ -339,7 +342,7 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
 {
     /* the files the case read (a layer sample) still hold what the sweep
      * started with: a sample edited mid-sweep gave rows of both, silently */
-    int rc = gw_sweep_case_inputs_check(s->cfg, strtol(row, NULL, 10), err);
+    int rc = gw_sweep_case_inputs_check_memo(s->cfg, strtol(row, NULL, 10), &s->inputs_memo, err);
     /* and the case read them as they were: a case that read the sample while
      * it was changed, and ended after it was restored, passed the check above */
     if (rc == GW_OK)
@@ -1051,6 +1054,7 @@ finish:
     free(check_warn);
     free(rows_warn);
     free(s.todo);
+    gw_io_hash_memo_free(&s.inputs_memo);
     free(s.w);
     free(s.kind);
     gw_sweep_config_free(&cfg);

@@ -106,6 +106,44 @@ int gw_io_path_join(char *buf, size_t n, const char *dir, const char *name, cons
 int gw_io_fnv1a64_file_from(unsigned long long h0, const char *path, const char *what, unsigned long long max,
                             int text, unsigned long long *h, gw_err *err);
 
+/* gw_io_hash_memo.c: the content hashes of the files a pass reads again and
+ * again (a sweep's sample, once for each of its cases), kept while each file
+ * is, as stat says, the one that was hashed: its device, inode, size,
+ * modification and status-change times (to the nanosecond) the same. A
+ * write to the file changes its status-change time, which no call sets back
+ * (touch -d sets the modification time and moves the status-change one to
+ * now), and a file put in its place is another inode. A hash is kept only
+ * when both times were older than GW_HASH_MEMO_SETTLE_S seconds when the
+ * hash began (a file written within the clock's tick of the hash could be
+ * written again in that tick with the times unchanged: it is hashed again at
+ * each call until it is older) and when the file's stat was the same before
+ * and after the hash (a file written while it was hashed). A file stamped by
+ * a clock other than this machine's (a network file system's server) is
+ * trusted as far as its times move on at each write. Not thread-safe: one
+ * memo per pass. */
+#define GW_HASH_MEMO_SETTLE_S 2
+typedef struct gw_hash_memo {
+    struct gw_hash_seen {
+        char *path;
+        dev_t dev;
+        ino_t ino;
+        long long size, mtime_s, mtime_ns, ctime_s, ctime_ns;
+        unsigned long long hash;
+    } *seen;
+    long n, cap;
+    long hashed; /* the hashes fn made through the memo (what the tests count) */
+} gw_hash_memo;
+/* The hash function a memo calls (a model's gw_sweep_input_rule: its
+ * reader's rules and the hash in one pass). */
+typedef int (*gw_hash_memo_fn)(const char *path, unsigned long long *h, gw_err *err);
+/* path's hash into *h: the memo's when path is as stat saw it when the memo
+ * kept it, else fn's (its status and message as fn set them; GW_OK kept when
+ * it may be). m NULL: fn's, always. A memo that cannot grow (out of memory)
+ * keeps nothing more: fn's hash is still given. */
+int gw_io_hash_memo(gw_hash_memo *m, const char *path, gw_hash_memo_fn fn, unsigned long long *h, gw_err *err);
+/* Frees what m keeps, and zeroes it (NULL: nothing). */
+void gw_io_hash_memo_free(gw_hash_memo *m);
+
 /* A temporary made (path) for gw_temps_remove to find until it is placed
  * or removed (gw_io_temps.c): the slot taken, or -1 when no slot could be
  * had (out of memory for a new block of the table; the caller then removes

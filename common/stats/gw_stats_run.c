@@ -341,54 +341,97 @@ void gw_stats_analysis_free(gw_stats_analysis *A)
     memset(A, 0, sizeof *A);
 }
 
-/* 1 when the sweep that wrote the table said its settling itself (its
- * "# warning:" line, repeated first among A's warnings: layer_sweep_model.c's
- * memo_warnings) for the nw of the table's rows the column marks: the
- * settling is then said once, in the sweep's words (which name the first
- * case's verdict); a line counting other cases (a table cut or joined by
- * hand) is not this one, and both are said */
-static int sweep_said_settling(const gw_stats_analysis *A, long nw)
+/* The sweep's own settling line, as layer_sweep_model.c's memo_warnings
+ * writes it into the table's "# warning:" lines */
+#define SWEEP_SETTLING "cases run on a sample settled under another material or not settled"
+static const char sweep_warned[] = ": the sweep that wrote it warned: ";
+
+/* 1 when line (a "# warning:" text of the table) is the sweep's settling line */
+static int is_sweep_settling(const char *line, int len)
 {
-    static const char said[] = ": the sweep that wrote it warned: ";
-    for (const char *p = A->warnings; p && (p = strstr(p, said)) != NULL;) {
-        p += sizeof said - 1;
-        long n = -1, m = -1;
-        int at = 0;
-        if (sscanf(p, "%ld of %ld cases run on a sample settled under another material or not settled%n", &n, &m,
-                   &at) == 2 && at > 0 && n == nw && m == A->t.nrows)
+    long n = -1, m = -1;
+    int at = 0;
+    char head[160];
+    gw_snprintf(head, sizeof head, "%.*s", len, line);
+    return sscanf(head, "%ld of %ld " SWEEP_SETTLING "%n", &n, &m, &at) == 2 && at > 0;
+}
+
+/* 1 when A's warnings say the sweep's settling line (sweep_settling_said) */
+static int sweep_said_settling(const gw_stats_analysis *A)
+{
+    for (const char *p = A->warnings; p && (p = strstr(p, sweep_warned)) != NULL;) {
+        p += sizeof sweep_warned - 1;
+        const char *e = strchr(p, '\n');
+        if (is_sweep_settling(p, e ? (int)(e - p) : (int)strlen(p)))
             return 1;
     }
     return 0;
+}
+
+/* The table's rows whose case ran on a sample settled under another
+ * material (column settling_warning = 1): how many (-1: no such column, an
+ * older table) and, in qs, their settled_load_ratio range ("" when none has
+ * a number). */
+static long settling_rows(const gw_stats_table *t, char *qs, size_t n)
+{
+    const int cw = gw_stats_table_col(t, "settling_warning"), cq = gw_stats_table_col(t, "settled_load_ratio");
+    long nw = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    qs[0] = '\0';
+    if (cw < 0)
+        return -1;
+    for (long r = 0; r < t->nrows; r++)
+        if (t->val[r * t->ncols + cw] == 1) {
+            nw++;
+            const double q = cq >= 0 ? t->val[r * t->ncols + cq] : NAN;
+            lo = fmin(lo, q), hi = fmax(hi, q); /* fmin and fmax pass over nan */
+        }
+    if (lo <= hi)
+        gw_snprintf(qs, n, "settled_load_ratio %.3g to %.3g, 1 at rest", lo, hi);
+    return nw;
+}
+
+/* The sweep's settling line (len bytes at line) as layer-stats says it: the
+ * sweep's words (its count of cases, the first case's verdict), then what
+ * the table's rows hold, their count and their settled_load_ratio range.
+ * The sweep's line was said alone when its count was the table's, without
+ * the range; a table cut or joined by hand had the sweep's line and
+ * layer-stats' own one beside it, the settling said twice. */
+static int sweep_settling_said(gw_stats_analysis *A, const char *line, int len)
+{
+    char qs[96];
+    const long nw = settling_rows(&A->t, qs, sizeof qs);
+    if (nw < 0)
+        return gw_warnings_add(&A->warnings, "%s%s%.*s", A->input, sweep_warned, len, line);
+    if (nw == 0)
+        return gw_warnings_add(&A->warnings, "%s: the sweep that wrote it warned: %.*s; in this table none of its "
+                               "%ld rows has settling_warning = 1", A->input, len, line, A->t.nrows);
+    return gw_warnings_add(&A->warnings, "%s: the sweep that wrote it warned: %.*s; in this table %ld of its %ld "
+                           "rows have settling_warning = 1%s%s: their outcomes hold the pile's own motion as well as "
+                           "the block's, and the statistics include them", A->input, len, line, nw, A->t.nrows,
+                           qs[0] ? ", " : "", qs);
 }
 
 /* The rows of a layer sweep whose case ran on a sample settled under
  * another material, gravity, mass law, clump mass or friction (the model's
  * column settling_warning = 1, tables since session 28; an older table has
  * no such column and nothing is said): their outcomes hold the pile's own
- * motion as well as the block's, which the table's numbers cannot show. */
+ * motion as well as the block's, which the table's numbers cannot show.
+ * Said here for a table without the sweep's settling line (an older table,
+ * or one whose "# warning:" lines were taken out); with it, that line says
+ * the rows' count and range (sweep_settling_said): one line in every case. */
 static int settling_warning(gw_stats_analysis *A)
 {
-    const gw_stats_table *t = &A->t;
-    const int cw = gw_stats_table_col(t, "settling_warning"), cq = gw_stats_table_col(t, "settled_load_ratio");
-    long nw = 0;
-    double lo = INFINITY, hi = -INFINITY;
-    for (long r = 0; cw >= 0 && r < t->nrows; r++)
-        if (t->val[r * t->ncols + cw] == 1) {
-            nw++;
-            const double q = cq >= 0 ? t->val[r * t->ncols + cq] : NAN;
-            lo = fmin(lo, q), hi = fmax(hi, q); /* fmin and fmax pass over nan */
-        }
-    if (nw == 0 || sweep_said_settling(A, nw))
+    char qs[96];
+    const long nw = settling_rows(&A->t, qs, sizeof qs);
+    if (nw <= 0 || sweep_said_settling(A))
         return GW_OK;
-    char qs[96] = "";
-    if (lo <= hi)
-        gw_snprintf(qs, sizeof qs, "; settled_load_ratio %.3g to %.3g, 1 at rest", lo, hi);
     return gw_warnings_add(&A->warnings,
                            "%ld of %ld rows ran on a sample settled under another material, gravity, mass law, "
-                           "clump mass or friction than their case's, or not settled (column settling_warning = 1%s): "
+                           "clump mass or friction than their case's, or not settled (column settling_warning = 1%s%s): "
                            "their outcomes hold the pile's own motion as well as the block's, and the statistics "
                            "include them",
-                           nw, t->nrows, qs);
+                           nw, A->t.nrows, qs[0] ? "; " : "", qs);
 }
 
 /* The rows of a layer sweep whose block fell off the layer (column fell_off
@@ -583,7 +626,8 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
     for (const char *p = rc == GW_OK ? said : NULL; p && *p && rc == GW_OK;) {
         const char *e = strchr(p, '\n');
         const int n = e ? (int)(e - p) : (int)strlen(p);
-        if (gw_warnings_add(&A->warnings, "%s: the sweep that wrote it warned: %.*s", A->input, n, p) != GW_OK)
+        if ((is_sweep_settling(p, n) ? sweep_settling_said(A, p, n)
+                                     : gw_warnings_add(&A->warnings, "%s%s%.*s", A->input, sweep_warned, n, p)) != GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", A->input);
         p += n + (e ? 1 : 0);
     }

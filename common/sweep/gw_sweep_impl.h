@@ -10,6 +10,7 @@
 #include <stddef.h>
 
 #include "gw_sweep.h"
+#include "gw_io_impl.h"
 
 /* gw_sweep_run.c: a case's pairs as a model's run, check and memory take
  * them (both models' prepare): nk >= 0, names and values given when nk > 0,
@@ -70,6 +71,12 @@ int gw_sweep_config_check(const gw_sweep_config *cfg, gw_err *err);
 
 /* gw_sweep_config.c: a copy of s (malloc'd), NULL on ENOMEM. */
 char *gw_sweep_strdup(const char *s);
+
+/* gw_sweep_inputs.c: gw_sweep_case_inputs_check with the hashes kept in
+ * memo (gw_io_hash_memo; NULL: each file hashed again) from one case to the
+ * next: a sample stat finds unchanged since its last hash is not read again,
+ * a sample written or replaced is (its status-change time or inode moved). */
+int gw_sweep_case_inputs_check_memo(const gw_sweep_config *cfg, long k, gw_hash_memo *memo, gw_err *err);
 
 /* gw_sweep_inputs.c: the config's directory (malloc'd; NULL with *status and
  * err set), its relative paths resolved from base, whether key name is the

@@ -51,7 +51,7 @@ JOBS=${JOBS:-$(nproc)}
 
 packages=(build-essential cmake pkg-config libsundials-dev libgsl-dev libfftw3-dev
           libhdf5-dev libcjson-dev libinih-dev libopenmpi-dev openmpi-bin python3-numpy python3-scipy python3-matplotlib python3-h5py
-          jupyter-nbconvert python3-ipykernel python3-pytest clang libclang-rt-14-dev valgrind)
+          jupyter-nbconvert python3-ipykernel python3-pytest clang libclang-rt-14-dev valgrind strace)
 
 install_missing() {
     local missing=()

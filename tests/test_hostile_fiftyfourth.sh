@@ -15,6 +15,16 @@
 #    now "'n' before any section header: a config opens with [sweep]".
 #    Controls: 'n: 3' (the reader's other separator) and a [grid] list over
 #    an indented line run.
+#  3 A sample whose header porosity its particles cannot give. The porosity
+#    check (layer_sample_check.c) reads the window x in [0.1, 0.9] W, y in
+#    [0.1, 0.8] h, h the pile's top, and passed any header value when the
+#    window held no disc (meant for a pile of one or two discs, whose
+#    header layer-make leaves without a porosity, or wrote 1): one disc of
+#    a made 10-disc pile lifted to y = 50 m or 1e5 m (the window's h with
+#    it) ran as the settled pile (exit 0), where 5 m was refused as a header
+#    not these particles'. An empty window now passes a header of 1 (or
+#    none) only. Controls: the made pile and the lifted one without its
+#    porosity line run.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -55,5 +65,30 @@ for f in f g; do
 done
 [ "$(grep -vc '^#' o2/results.csv)" = 3 ] && ok "control: the indented list's two cases" ||
     ko "control: o2/results.csv: $(grep -vc '^#' o2/results.csv) lines"
+
+# --- 3 a sample whose porosity its particles cannot give ---
+make_sample s10.txt --n 10
+# line 14: the first particle (x y r)
+for y in 50 1e5; do
+    awk -v y="$y" 'NR == 14 { $2 = y } { print }' s10.txt >lift.txt
+    refused "layer-impact: one disc lifted to y = $y m: the header's porosity is not these particles'" \
+        "^granwave layer-impact: sample 'lift\\.txt': line 10: header 'porosity': 0\\.[0-9]+, but its particles and width leave the window .* without a disc: the header is not these particles'" \
+        layer-impact --sample lift.txt --t-max 0.002 --out o
+done
+awk 'NR == 14 { $2 = 5 } { print }' s10.txt >lift.txt
+refused "layer-impact: lifted to y = 5 m: refused (a guard)" \
+    "^granwave layer-impact: sample 'lift\\.txt': line 10: header 'porosity': .* but its particles and width give" \
+    layer-impact --sample lift.txt --t-max 0.002 --out o
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nvi = 10, 20\n[params]\nsample = lift50.txt\nt-max = 0.002\n' >l.ini
+awk 'NR == 14 { $2 = 50 } { print }' s10.txt >lift50.txt
+refused "sweep: a layer case over the lifted pile" "lift50\\.txt.*without a disc: the header is not these particles'" sweep l.ini
+awk 'NR == 14 { $2 = 50 } { print }' s10.txt | grep -v '^porosity ' >noporo.txt
+for f in s10.txt noporo.txt; do
+    if cpu_run 60 "$GW" layer-impact --sample $f --t-max 0.002 --quiet >/dev/null 2>"$tmp/stderr"; then
+        ok "control: $f runs"
+    else
+        ko "control: $f: exit $? ($(head -c 200 "$tmp/stderr"))"
+    fi
+done
 
 test_summary test_hostile_fiftyfourth

@@ -360,6 +360,11 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
         return *dst ? 1 : parse_nomem(pc);
     }
     int is_grid = strcmp(section, "grid") == 0;
+    if (!*section) { /* a key above the first header was "unknown section []" */
+        gw_snprintf(pc->msg, sizeof pc->msg, "'%s' before any section header: a config opens with [sweep] (then "
+                    "[grid] and [params])", name);
+        return 0;
+    }
     if (!is_grid && strcmp(section, "params") != 0) {
         gw_snprintf(pc->msg, sizeof pc->msg, "unknown section [%s] (sweep, grid, params)", section);
         return 0;
@@ -569,6 +574,15 @@ static int scan_lines(const char *text, const char *name, int whole, parse_ctx *
                     gw_snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
                     key_ln = ln;
                     call = 0;
+                } else {
+                    /* the reader notes the line's error and reads on: the
+                     * first message of a later line came out under this
+                     * line's number ("s.ini:5: [grid] vimp: 'abc' is not a
+                     * number" for 'n 3' on line 5, vimp on line 6), or
+                     * "syntax error" alone */
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: '%.*s' is neither a key = value nor a [section] "
+                                      "header%s", name, ln, (int)(end - i), p + i,
+                                      key[0] || sect[0] ? "" : " (a config opens with [sweep])");
                 }
             }
         }

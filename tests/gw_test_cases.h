@@ -7,7 +7,10 @@
  * the process has read. And what other child-case tests wrote twice: an
  * unsettled layer-make result (test_library_hostile46b, test_library_left46);
  * a contact stiffness refused naming it with its range, a column's run status
- * and its F_max (test_library_hostile50, test_stiffness_named). */
+ * and its F_max (test_library_hostile50, test_stiffness_named); a 3-bead
+ * column with k and kwall given, and a costly drop's warnings as its rerun's
+ * kind and step say them (test_rk4_refusals, test_library_chain_silent,
+ * test_library_hostile53). */
 #ifndef GW_TEST_CASES_H
 #define GW_TEST_CASES_H
 
@@ -193,5 +196,37 @@ static inline double test_chain_fmax(const gw_chain_params *p, const gw_chain_ru
     gw_chain_free(c);
     return f;
 }
+
+/* The default column of 3 beads, with k and kwall where they are > 0. */
+static inline gw_chain_params test_chain_column(double k, double kwall)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    if (k > 0)
+        p.k = k;
+    if (kwall > 0)
+        p.kwall = kwall;
+    return p;
+}
+
+/* The warnings of a drop result made by hand: a costly chatter rerun of kind
+ * RERUN at step RUN_DT, 1000 steps of 3 beads to 1 ms. NULL when the call
+ * failed; else the caller frees them. */
+static inline char *test_drop_said(int rerun, double run_dt)
+{
+    gw_chain_drop_result r;
+    memset(&r, 0, sizeof r);
+    r.chatter_kind = GW_CHAIN_CHATTER_COSTLY;
+    r.chatter_rerun = rerun;
+    r.run_dt = run_dt;
+    r.stats.steps = 1000;
+    r.n = 3;
+    r.t_end = 1e-3;
+    char *w = NULL;
+    if (gw_chain_drop_result_warnings(&r, &w) != GW_OK)
+        return NULL;
+    return w;
+}
+
 
 #endif

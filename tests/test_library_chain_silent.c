@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "granwave.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
 
 /* ------------------------------------------------ a NaN state's force ---- */
@@ -60,60 +61,55 @@ static gw_chain *column(int kind)
     return c;
 }
 
-/* bead 1's overlap (and, where it has one, the sensor's position) NaN: the
- * contact force and the elastic energy NaN under every wall */
-static int c_nan_overlap(void)
+/* The forces and energies of the column of KIND (column()) at its initial
+ * state with bead 1's overlap X0 and, where SET_V1, its rate V1: all NaN wanted (the sensor
+ * force only where the wall is not the sensor's, which X0 does not reach).
+ * The faults said, counted. */
+static int nan_said(int kind, double x0, int set_v1, double v1, const char *what)
 {
-    int bad = 0;
-    for (int kind = 0; kind < W_N; kind++) {
-        gw_chain *c = column(kind);
-        EXPECT(c);
-        const long dim = gw_chain_system(c)->dim;
-        double *y = calloc((size_t)dim, sizeof *y);
-        EXPECT(y);
-        gw_chain_initial_state(c, y);
-        y[0] = NAN;
-        gw_chain_energy en;
-        gw_chain_energy_of(c, y, &en);
-        const double f = gw_chain_wall_contact_force(c, y), fs = gw_chain_wall_force(c, y);
-        if (!isnan(f) || !isnan(en.elastic) || (kind != W_SENSOR && !isnan(fs))) {
-            printf("%s: contact force %g, sensor force %g, elastic %g (NaN wanted)\n", wall_name[kind], f, fs,
-                   en.elastic);
-            bad++;
-        }
-        free(y);
+    gw_chain *c = column(kind);
+    if (!c)
+        return 1;
+    const long dim = gw_chain_system(c)->dim;
+    double *y = calloc((size_t)dim, sizeof *y);
+    if (!y) {
         gw_chain_free(c);
+        return 1;
     }
+    gw_chain_initial_state(c, y);
+    y[0] = x0;
+    if (set_v1)
+        y[1] = v1;
+    gw_chain_energy en;
+    gw_chain_energy_of(c, y, &en);
+    const double f = gw_chain_wall_contact_force(c, y), fs = gw_chain_wall_force(c, y);
+    int bad = 0;
+    if (!isnan(f) || !isnan(en.total) || !isnan(en.elastic) || (kind != W_SENSOR && !isnan(fs))) {
+        printf("%s, %s: contact force %g, sensor force %g, energy %g, elastic %g (NaN wanted)\n", wall_name[kind],
+               what, f, fs, en.total, en.elastic);
+        bad = 1;
+    }
+    free(y);
+    gw_chain_free(c);
     return bad;
 }
 
-/* the overlap closed, its rate or a Maxwell arm NaN: NaN */
+/* bead 1's overlap NaN (and, where it has one, the sensor's position
+ * with it): the contact force and the energies NaN under every wall */
+static int c_nan_overlap(void)
+{
+    int bad = 0;
+    for (int kind = 0; kind < W_N; kind++)
+        bad += nan_said(kind, NAN, 0, 0.0, "overlap NaN");
+    return bad;
+}
+
+/* the overlap closed and its rate NaN: NaN */
 static int c_nan_rate(void)
 {
     int bad = 0;
-    for (int kind = 0; kind < W_N; kind++) {
-        gw_chain *c = column(kind);
-        EXPECT(c);
-        const long dim = gw_chain_system(c)->dim;
-        double *y = calloc((size_t)dim, sizeof *y);
-        EXPECT(y);
-        gw_chain_initial_state(c, y);
-        y[0] = 1e-7;
-        y[1] = NAN;
-        const double f = gw_chain_wall_contact_force(c, y);
-        if (!isnan(f)) {
-            printf("%s: v_1 NaN, contact force %g (NaN wanted)\n", wall_name[kind], f);
-            bad++;
-        }
-        gw_chain_energy en;
-        gw_chain_energy_of(c, y, &en);
-        if (!isnan(en.total) || !isnan(en.elastic)) {
-            printf("%s: v_1 NaN, energy %g, elastic %g (NaN wanted)\n", wall_name[kind], en.total, en.elastic);
-            bad++;
-        }
-        free(y);
-        gw_chain_free(c);
-    }
+    for (int kind = 0; kind < W_N; kind++)
+        bad += nan_said(kind, 1e-7, 1, NAN, "v_1 NaN");
     return bad;
 }
 
@@ -181,27 +177,11 @@ static int c_run_check_control(void)
 
 /* ------------------------------------------- a drop's rerun of no kind ---- */
 
-static char *drop_said(int rerun)
-{
-    gw_chain_drop_result r;
-    memset(&r, 0, sizeof r);
-    r.chatter_kind = GW_CHAIN_CHATTER_COSTLY;
-    r.chatter_rerun = rerun;
-    r.run_dt = NAN;
-    r.stats.steps = 1000;
-    r.n = 3;
-    r.t_end = 1e-3;
-    char *w = NULL;
-    if (gw_chain_drop_result_warnings(&r, &w) != GW_OK)
-        return NULL;
-    return w;
-}
-
 static int c_drop_rerun_invalid(void)
 {
     const int bad[] = {99, INT_MIN, -1, GW_CHAIN_RERUN_STEP + 1, INT_MAX};
     for (int i = 0; i < 5; i++) {
-        char *w = drop_said(bad[i]);
+        char *w = test_drop_said(bad[i], NAN);
         char want[96];
         snprintf(want, sizeof want, "chatter_rerun, %d, is invalid", bad[i]);
         if (!w || !strstr(w, want) || strstr(w, "tighter") || strstr(w, "--dt")) {
@@ -216,7 +196,7 @@ static int c_drop_rerun_invalid(void)
 
 static int c_drop_rerun_control(void)
 {
-    char *w = drop_said(GW_CHAIN_RERUN_TOL);
+    char *w = test_drop_said(GW_CHAIN_RERUN_TOL, NAN);
     EXPECT(w && strstr(w, "compare a run at 10 times tighter --rtol and --atol; ") && !strstr(w, "invalid"));
     free(w);
     return 0;
@@ -226,12 +206,7 @@ static int c_drop_rerun_control(void)
 
 static int rk4_check(double dt, double k, double kwall, gw_err *e)
 {
-    gw_chain_params p = gw_chain_params_default();
-    p.n = 3;
-    if (k > 0)
-        p.k = k;
-    if (kwall > 0)
-        p.kwall = kwall;
+    gw_chain_params p = test_chain_column(k, kwall);
     gw_chain_run_opts o = gw_chain_run_opts_default();
     o.solver = gw_solver_rk4;
     o.sp.dt = dt;

@@ -46,6 +46,7 @@
 
 #include "granwave.h"
 #include "gw_sweep.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
 
 /* ----------------------------------------------- the grid's speeds ---- */
@@ -386,28 +387,12 @@ static int c_sweep_run_model_control(void)
 
 /* ------------------------------------------ the drop's chatter rerun ---- */
 
-static char *drop_said(int rerun, double run_dt)
-{
-    gw_chain_drop_result r;
-    memset(&r, 0, sizeof r);
-    r.chatter_kind = GW_CHAIN_CHATTER_COSTLY;
-    r.chatter_rerun = rerun;
-    r.run_dt = run_dt;
-    r.stats.steps = 1000;
-    r.n = 3;
-    r.t_end = 1e-3;
-    char *w = NULL;
-    if (gw_chain_drop_result_warnings(&r, &w) != GW_OK)
-        return NULL;
-    return w;
-}
-
 static int c_drop_rerun_step_unknown(void)
 {
     const double dts[] = {NAN, -1, 0, INFINITY, -INFINITY};
     const char *shown[] = {"nan", "-1", "0", "inf", "-inf"};
     for (int i = 0; i < 5; i++) {
-        char *w = drop_said(GW_CHAIN_RERUN_STEP, dts[i]);
+        char *w = test_drop_said(GW_CHAIN_RERUN_STEP, dts[i]);
         char want[160];
         snprintf(want, sizeof want, "compare a run at --dt half the drop's rk4 step (its run_dt, %s, is not one); ",
                  shown[i]);
@@ -426,20 +411,20 @@ static int c_drop_rerun_step_unknown(void)
  * said invalid (session 48) */
 static int c_drop_rerun_control(void)
 {
-    char *w = drop_said(GW_CHAIN_RERUN_STEP, 1e-9);
+    char *w = test_drop_said(GW_CHAIN_RERUN_STEP, 1e-9);
     EXPECT(w && strstr(w, "compare a run at --dt 5e-10 (half the step); "));
     free(w);
-    w = drop_said(GW_CHAIN_RERUN_STEP, 1e-300);
+    w = test_drop_said(GW_CHAIN_RERUN_STEP, 1e-300);
     EXPECT(w && strstr(w, "compare a run at --dt 5e-301 (half the step); "));
     free(w);
-    w = drop_said(GW_CHAIN_RERUN_TOL, NAN);
+    w = test_drop_said(GW_CHAIN_RERUN_TOL, NAN);
     EXPECT(w && strstr(w, "compare a run at 10 times tighter --rtol and --atol; ") && !strstr(w, "run_dt"));
     free(w);
     /* chatter_rerun outside the enum (99, INT_MIN) is said invalid, not worded
      * with the tolerances' rule (session 48, test_library_chain_silent) */
     const int others[] = {99, INT_MIN};
     for (int i = 0; i < 2; i++) {
-        w = drop_said(others[i], NAN);
+        w = test_drop_said(others[i], NAN);
         EXPECT(w && strstr(w, "is invalid") && !strstr(w, "tighter") && !strstr(w, "run_dt"));
         free(w);
     }

@@ -36,6 +36,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
 
 static int n_bad;
@@ -48,17 +49,6 @@ static int n_bad;
             n_bad++;                                                                                  \
         }                                                                                             \
     } while (0)
-
-static gw_chain_params column(double k, double kwall)
-{
-    gw_chain_params p = gw_chain_params_default();
-    p.n = 3;
-    if (k > 0)
-        p.k = k;
-    if (kwall > 0)
-        p.kwall = kwall;
-    return p;
-}
 
 static gw_chain_run_opts rk4(double dt, double dt_max)
 {
@@ -84,7 +74,7 @@ static double after(const char *s, const char *key)
 
 static int c_dt_and_k(void)
 {
-    gw_chain_params p = column(1e30, 0);
+    gw_chain_params p = test_chain_column(1e30, 0);
     gw_chain_run_opts o = rk4(1e-13, 0);
     gw_err e;
     const int rc = check_msg(&p, &o, &e);
@@ -96,7 +86,7 @@ static int c_dt_and_k(void)
     if (n_bad)
         printf("'%s'\n", e.msg);
     /* that k is the dt's alone, at least the least steps said */
-    gw_chain_params q = column(k_dt, 0);
+    gw_chain_params q = test_chain_column(k_dt, 0);
     const int rc2 = check_msg(&q, &o, &e);
     CHECK(rc2 == GW_EINVAL && strncmp(e.msg, "dt: a step of 1e-13 s needs about ", 34) == 0 && !strstr(e.msg, "k:"));
     CHECK(after(e.msg, "needs about ") >= least * (1 - 1e-3));
@@ -116,7 +106,7 @@ static int c_dt_and_k(void)
 static int c_dt_and_kwall(void)
 {
     /* kwall 1e30 at dt 1e-13 was the default dt-out's */
-    gw_chain_params p = column(0, 1e30);
+    gw_chain_params p = test_chain_column(0, 1e30);
     gw_chain_run_opts o = rk4(1e-13, 0);
     gw_err e;
     CHECK(check_msg(&p, &o, &e) == GW_EINVAL && strncmp(e.msg, "dt: a step of 1e-13 s", 21) == 0);
@@ -130,7 +120,7 @@ static int c_dt_and_kwall(void)
 static int c_dt_max_given(void)
 {
     /* with a dt-max given the dt alone was named (k 1e30 left out) */
-    gw_chain_params p = column(1e30, 0);
+    gw_chain_params p = test_chain_column(1e30, 0);
     gw_chain_run_opts o = rk4(1e-13, 1e-9);
     gw_err e;
     CHECK(check_msg(&p, &o, &e) == GW_EINVAL && strncmp(e.msg, "dt: a step of 1e-13 s", 21) == 0);
@@ -144,7 +134,7 @@ static int c_dt_max_given(void)
 static int c_soft_wall(void)
 {
     /* k 1e30 on a wall of kwall 1e-30 at dt 1e-9: the dt-max's (not given) */
-    gw_chain_params p = column(1e30, 1e-30);
+    gw_chain_params p = test_chain_column(1e30, 1e-30);
     gw_chain_run_opts o = rk4(1e-9, 0);
     gw_err e;
     CHECK(check_msg(&p, &o, &e) == GW_EINVAL && strncmp(e.msg, "dt-max", 6) != 0);
@@ -164,7 +154,7 @@ static int c_matrix(void)
         for (int b = 0; b < 2; b++)
             for (int c = 0; c < 3; c++)
                 for (int d = 0; d < 3; d++) {
-                    gw_chain_params p = column(ks[c], ks[d]);
+                    gw_chain_params p = test_chain_column(ks[c], ks[d]);
                     gw_chain_run_opts o = rk4(dts[a], dtms[b]);
                     gw_err e;
                     if (check_msg(&p, &o, &e) == GW_OK)
@@ -185,16 +175,16 @@ static int c_controls(void)
 {
     gw_err e;
     /* the dt alone, at the default k */
-    gw_chain_params p = column(0, 0);
+    gw_chain_params p = test_chain_column(0, 0);
     gw_chain_run_opts o = rk4(1e-13, 0);
     CHECK(check_msg(&p, &o, &e) == GW_EINVAL && strncmp(e.msg, "dt: a step of 1e-13 s needs about ", 34) == 0 &&
           !strstr(e.msg, "k:"));
     /* k alone, no dt: its range */
-    p = column(1e30, 0);
+    p = test_chain_column(1e30, 0);
     o = rk4(0, 0);
     CHECK(check_msg(&p, &o, &e) == GW_EINVAL && strncmp(e.msg, "k: 1e+30 N/m^1.5 is outside [", 29) == 0);
     /* k 1e30 on a wall of 1e30 runs at dt 1e-13 (the contacts' quarter the step) */
-    p = column(1e30, 1e30);
+    p = test_chain_column(1e30, 1e30);
     o = rk4(1e-13, 0);
     CHECK(check_msg(&p, &o, &e) == GW_OK);
     return n_bad;
@@ -234,7 +224,7 @@ static int c_drop_rerun(void)
 #ifndef GW_TEST_BEFORE
 static int c_tolerances(void)
 {
-    gw_chain_params p = column(0, 0);
+    gw_chain_params p = test_chain_column(0, 0);
     gw_chain *c = NULL;
     gw_err e = {{0}};
     CHECK(gw_chain_create(&p, &c, &e) == GW_OK);

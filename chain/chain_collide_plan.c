@@ -1172,7 +1172,7 @@ static int wall_too_soft(const gw_chain_params *q)
  * the step. Its kwall was never named: the refusal said "dt: ... raise it"
  * under rk4 with a dt given (dt 1e-9: raising it to rk4's largest step, a
  * quarter of the bead contact, still left 5e16 steps), and k (outside
- * [1.5e-42, 1.6e-18]) without one (left after session 47). */
+ * [1.5e-42, 1.6e-18]) without one (left after session 46). */
 static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
                          int soft, const char *over, gw_err *err)
 {

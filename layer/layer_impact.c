@@ -785,7 +785,7 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
             return gw_err_set(err, GW_EINVAL, "%s: %g s is not 0 (%s) or a normal finite number > 0", st[i].name,
                               st[i].v, i ? "no limit" : "the automatic step");
     /* the program's bound (its --dt row): a verlet step of 1e200 s passed
-     * here until session 48, where the program refused it */
+     * here before, where the program refused it */
     if (sp->dt > GW_LAYER_DT_MAX)
         return gw_err_set(err, GW_EINVAL, "dt: %g s is above %g s (GW_LAYER_DT_MAX, the longest step an impact takes)",
                           sp->dt, GW_LAYER_DT_MAX);

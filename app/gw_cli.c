@@ -467,6 +467,9 @@ int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
 {
     char tmp[sizeof err->msg], name[64];
     snprintf(tmp, sizeof tmp, "%s", err->msg);
+    const size_t c = strlen(cmd);
+    if (strncmp(tmp, cmd, c) == 0 && (tmp[c] == ':' || tmp[c] == ' '))
+        return rc; /* it names the command already ("softwall: out of memory"): not twice */
     const char *colon = strchr(tmp, ':');
     size_t n = colon ? (size_t)(colon - tmp) : 0;
     int named = 0;
@@ -507,6 +510,15 @@ int gw_cli_json_stdout(const char *cmd, const cJSON *o)
         return 0;
     fprintf(stderr, "granwave %s: out of memory for the JSON result\n", cmd);
     return 1;
+}
+
+void gw_cli_error(const char *cmd, const char *msg)
+{
+    const size_t n = strlen(cmd);
+    if (strncmp(msg, cmd, n) == 0 && (msg[n] == ' ' || msg[n] == ':'))
+        fprintf(stderr, "granwave %s\n", msg);
+    else
+        fprintf(stderr, "granwave %s: %s\n", cmd, msg);
 }
 
 void gw_cli_warnings(const char *cmd, const char *list)

@@ -230,7 +230,8 @@ const char *gw_cli_num(char *buf, size_t n, const char *fmt, double v);
  * parse ran first with the same names and ranges). GW_EINVAL "CMD --NAME: ...". */
 int gw_cli_study_setup(const struct gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
                        const char *cmd, gw_err *err);
-/* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
+/* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t,
+ * else "CMD: NAME: reason", but as it is when it names CMD already ("CMD: reason"). */
 int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err *err);
 /* A result's warnings (gw_common.h, "warnings of a result"; may be NULL), the
  * library's texts: each on stderr as "granwave CMD: warning: TEXT". */
@@ -249,6 +250,10 @@ int gw_cli_json_stdout(const char *cmd, const struct cJSON *o);
  * error flag cleared (said once, by the writer that saw the errno: the
  * program's last check of stdout then finds nothing new); returns 1. */
 int gw_cli_stdout_failed(const char *cmd, int e);
+/* A failure's message on stderr as "granwave CMD: MSG", or "granwave MSG"
+ * when MSG already names the command ("layer-impact: out of memory ...", the
+ * parser's "layer-impact --vi: ..."), so that no line says it twice. */
+void gw_cli_error(const char *cmd, const char *msg);
 /* "granwave CMD: out of memory" on stderr; returns 1 (a run failure, not bad
  * input: the command line was not read wrong). */
 int gw_cli_nomem(const char *cmd);

@@ -11,7 +11,8 @@
 #  - exit 0 with stdout and every --out file as the undisturbed run's, or
 #  - exit 1 (never 2: the input is not at fault) with exactly one new line on
 #    stderr, which for an allocation says "out of memory" (or the OS's "Cannot
-#    allocate memory"), and leave in --out no file that differs from the
+#    allocate memory"), naming the command once ("granwave layer-make:
+#    layer-make: out of memory" before), and leave in --out no file that differs from the
 #    undisturbed run's (complete files of the run are allowed: a JSON result
 #    that could not be printed after the files were placed), besides what a
 #    failed run leaves by design (a sweep's journal.csv to resume from,
@@ -247,6 +248,8 @@ for name, argv, io in CASES:
                              if k not in ALLOWED and (ref_snap is None or ref_snap.get(k) != v))
             if len(new) != 1:
                 prob = 'exit %d with %d new lines on stderr' % (rc, len(new))
+            elif re.match(r'granwave ([a-z-]+): \1(:| --)', new[0]):
+                prob = 'exit %d, the line names the command twice' % rc
             elif kind == 'alloc' and not re.search(r'out of memory|Cannot allocate memory', new[0]):
                 prob = 'exit %d, the message does not say out of memory' % rc
             elif rc != 1:

@@ -14,8 +14,9 @@
 #    crowns.csv (t <= 0.08 s) are those of the same run to --t-max 0.08, whose
 #    4002 samples never grow; the last ledger row is at t_end.
 #  3 A run whose series do not fit (--full --t-max 10, 500,002 samples, 244
-#    MB, under ulimit -v 200000) still fails cleanly: exit 1, "out of memory",
-#    nothing on stdout and no ledger.csv or impact.json in --out (before: at
+#    MB, under ulimit -v 200000) still fails cleanly: exit 1, "out of memory"
+#    on one line that names the command once (it said "granwave layer-impact:
+#    layer-impact: out of memory" before), nothing on stdout and no ledger.csv or impact.json in --out (before: at
 #    the start; now at the growth that does not fit).
 # The memory-limited runs are skipped in a sanitizer build (its shadow memory
 # lies beyond any ulimit -v). Checks that fail on the code before: see
@@ -100,9 +101,10 @@ fi
 rm -rf nofit
 cpu_run 120 ./lim200000.sh "${BASE[@]}" --t-max 10 --full --json --out nofit >nofit.json 2>nofit.err
 rc=$?
-if [ $rc -eq 1 ] && grep -q "out of memory" nofit.err && [ ! -s nofit.json ] &&
+if [ $rc -eq 1 ] && grep -q "^granwave layer-impact: out of memory" nofit.err &&
+    ! grep -q "layer-impact: layer-impact" nofit.err && [ ! -s nofit.json ] &&
     [ ! -e nofit/ledger.csv ] && [ ! -e nofit/impact.json ]; then
-    ok "500,002 samples under ulimit -v 200000: exit 1, out of memory, no results written"
+    ok "500,002 samples under ulimit -v 200000: exit 1, out of memory said once, no results written"
 else
     ko "500,002 samples under ulimit -v 200000: exit $rc ($(head -c 300 nofit.err); $(ls nofit 2>/dev/null | tr '\n' ' '))"
 fi

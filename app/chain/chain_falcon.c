@@ -295,7 +295,7 @@ int gw_cmd_falcon(int argc, char **argv)
                 gw_cli_study_error(rows, "falcon", rc, &err);
             fprintf(stderr, "granwave %s\n", err.msg);
         } else {
-            fprintf(stderr, "granwave falcon: %s\n", err.msg);
+            gw_cli_error("falcon", err.msg); /* the library's "falcon: out of memory" said once */
         }
         code = rc == GW_EINVAL ? 2 : 1;
         goto out;

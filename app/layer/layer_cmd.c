@@ -39,11 +39,7 @@ static cJSON *mat_json(const gw_layer_params *p)
  * (the option parser's "layer-impact --vi: ...") is not prefixed twice. */
 static int fail(const char *cmd, const char *msg)
 {
-    const size_t n = strlen(cmd);
-    if (strncmp(msg, cmd, n) == 0 && (msg[n] == ' ' || msg[n] == ':'))
-        fprintf(stderr, "granwave %s\n", msg);
-    else
-        fprintf(stderr, "granwave %s: %s\n", cmd, msg);
+    gw_cli_error(cmd, msg);
     return 2;
 }
 
@@ -180,8 +176,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         gw_cli_study_error(gw_layer_make_setup_params(), "layer-make", rc, &err);
         return fail("layer-make", err.msg);
     }
-    if (rc != GW_OK) {
-        fprintf(stderr, "granwave layer-make: %s\n", err.msg);
+    if (rc != GW_OK) { /* the library's "layer-make: out of memory" said once */
+        gw_cli_error("layer-make", err.msg);
         return 1;
     }
     cJSON *settings = make_settings(&mp, &m.lp);
@@ -759,8 +755,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
         if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && !vc.failed) { /* "dt: ..." -> "layer-impact --dt: ...", as the plan's */
             gw_cli_study_error(gw_layer_impact_setup_params(), "layer-impact", rc, &err);
             fprintf(stderr, "granwave %s\n", err.msg);
-        } else
-            fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
+        } else /* the library's "layer-impact: out of memory ..." said once */
+            gw_cli_error("layer-impact", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     c.settled_q = r.settled_load_ratio;

@@ -212,7 +212,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
         gw_stats_analysis_free(&R);
         if (rc == GW_EINVAL)
             return fail(err.msg);
-        fprintf(stderr, "granwave layer-stats: %s\n", err.msg);
+        gw_cli_error("layer-stats", err.msg);
         return rc == GW_ENOMEM ? 1 : 2;
     }
     /* undecided points (n_points - n_valid in groups.csv and the JSON), bouncing

@@ -20,7 +20,7 @@ sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $
  $SRC/common/sweep/gw_sweep_table.c $SRC/common/sweep/gw_sweep_run.c $SRC/common/gw_pool.c"
 # the build a journal records names the numerical libraries' versions
 sweeplibs="-lsundials_cvode -lgsl -lgslcblas -lfftw3"
-common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c $SRC/common/gw_forklock.c"
+common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/common/gw_io_hash_memo.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c $SRC/common/gw_forklock.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common $sweeplibs -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
